@@ -1,0 +1,8 @@
+# Project-wide compile options, applied to every target by linking rkpm_options.
+add_library(rkpm_options INTERFACE)
+target_compile_options(rkpm_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow=local -Wnon-virtual-dtor)
+if(RKPM_SANITIZE)
+  target_compile_options(rkpm_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(rkpm_options INTERFACE -fsanitize=address,undefined)
+endif()
+target_link_libraries(rkpm_options INTERFACE OpenMP::OpenMP_CXX Eigen3::Eigen fmt::fmt)

@@ -1,0 +1,61 @@
+// Cloud generators. All lengths in metres. Each returns a finalized cloud
+// (see finalize_cloud) and the analytic quantities the tests compare against.
+#pragma once
+
+#include "rkpm/particles/cloud.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace rkpm::particles {
+
+// Rectangular block [origin, origin + size] of hexahedra, cells[i] per axis.
+// jitter > 0 moves every particle by a uniform random offset of at most
+// jitter * (local spacing) per axis, keeping boundary particles on their faces.
+// Surfaces: xmin xmax ymin ymax zmin zmax.
+struct BlockSpec {
+  Vec3 origin = Vec3::Zero();
+  Vec3 size = Vec3::Ones();
+  std::array<int, 3> cells = {8, 8, 8};
+  double jitter = 0.0;          // fraction of the spacing, [0, 0.3]
+  std::uint64_t seed = 1;
+};
+Cloud make_block(const BlockSpec& spec);
+
+// Solid ball of hexahedra: a cube mapped onto the ball, n cells along a diameter.
+// Surface: surface.
+struct SphereSpec {
+  Vec3 center = Vec3::Zero();
+  double radius = 1.0;
+  int cells = 12;               // cells across the diameter
+};
+Cloud make_sphere(const SphereSpec& spec);
+
+// Closed thick shell whose outer surface is the ellipsoid with the given semi-axes
+// and whose inner surface is the ellipsoid with every semi-axis reduced by
+// `thickness` (a true offset surface of an oblate spheroid self-intersects when the
+// thickness exceeds the rim's radius of curvature c^2/a; the seed's cell is such a
+// case). Cubed-sphere parametrisation: 6 faces of face_cells x face_cells, `layers`
+// particle layers through the wall. The default gives 6*32^2+2 = 6146 particles per
+// layer and 5 layers: 30,730 particles, the seed's 30,728 within 0.01 %.
+// Surfaces: outer inner.
+struct ShellSpec {
+  Vec3 center = Vec3::Zero();
+  Vec3 semi_axes = Vec3(5e-6, 5e-6, 1.5e-6);
+  double thickness = 0.5e-6;
+  int face_cells = 32;
+  int layers = 5;
+};
+Cloud make_shell(const ShellSpec& spec);
+
+// Nodes and cells (VTK_TETRA, VTK_HEXAHEDRON) of an unstructured-grid file (.vtu).
+// Throws CloudError naming the file and what was wrong with it.
+Cloud import_vtu(const std::string& path);
+
+// Analytic references.
+double ellipsoid_volume(const Vec3& semi_axes);
+double ellipsoid_area(const Vec3& semi_axes);       // exact for spheroids, numeric otherwise
+Vec3 ellipsoid_normal(const Vec3& semi_axes, const Vec3& x);  // outward unit normal at x (centred)
+
+}  // namespace rkpm::particles
