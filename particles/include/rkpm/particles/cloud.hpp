@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 

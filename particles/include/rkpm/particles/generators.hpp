@@ -50,6 +50,7 @@ struct ShellSpec {
 Cloud make_shell(const ShellSpec& spec);
 
 // Nodes and cells (VTK_TETRA, VTK_HEXAHEDRON) of an unstructured-grid file (.vtu).
+// Surface: boundary (every particle on the body's surface).
 // Throws CloudError naming the file and what was wrong with it.
 Cloud import_vtu(const std::string& path);
 

@@ -1,0 +1,83 @@
+// Nodal integration: one integration point per particle, at X_L with weight V_L,
+// and the flat operators a time step needs, built once in the reference
+// configuration (total Lagrangian).
+//
+// Stabilized conforming nodal integration (SCNI, Chen et al. 2001):
+//   b_I(X_L) = (1/V_L) \oint_{dOmega_L} Psi_I N dGamma
+// over the closed median-dual cell of L (see particles/dual_cells.hpp), by one-point
+// rules on planar triangles. Because the cells tile the body and every facet is
+// evaluated identically from both sides, sum_L V_L b_I(X_L) equals the boundary
+// integral of Psi_I N (the integration constraint) and the linear patch test is
+// passed to round-off on any cloud.
+// Direct nodal integration (b_I = grad Psi_I(X_L)) is kept only as a contrast: it
+// is unstable (spurious zero-energy modes).
+//
+// A step then computes F_L = sum_I x_I (x) b_I(X_L) (a gather over rows) and the
+// internal force f_I = sum_L V_L P_L b_I(X_L) (a gather over the transposed rows):
+// no atomics, no allocation.
+#pragma once
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/rk/rk_approximation.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace rkpm::particles {
+struct Cloud;
+}
+
+namespace rkpm::rk {
+
+enum class Integration { SCNI, Direct };
+
+// A sparse matrix of 3-vectors in compressed rows, with its transpose as index lists.
+struct GradientOperator {
+  std::vector<Index> row_offset;  // n_points + 1
+  std::vector<Index> col;         // particle I of each entry
+  std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m]
+  std::vector<double> weight;     // V_L: integration weight of each row [m^3]
+
+  // Transpose: for particle I, the entries (by index into col/grad) of every row
+  // that references it, ordered by row.
+  std::vector<Index> t_offset;    // n_particles + 1
+  std::vector<Index> t_entry;
+  std::vector<Index> t_row;
+
+  Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
+  void build_transpose(Index n_particles);
+};
+
+// Points on the body's surface with their outward area vectors and the shape
+// functions there: the quadrature for tractions, surface terms and the integration
+// constraint, consistent with the SCNI cells (the same boundary facets).
+struct BoundaryQuadrature {
+  std::vector<Vec3> point;        // [m]
+  std::vector<Vec3> area;         // outward area vector [m^2]
+  std::vector<Index> owner;       // the particle whose dual cell the facet bounds
+  std::vector<std::uint32_t> surface_mask;  // the named surfaces (Cloud::surface_names bits) the facet lies on
+  std::vector<Index> row_offset;  // shape functions at each point (CSR)
+  std::vector<Index> col;
+  std::vector<double> psi;
+};
+
+// Shape-function values at the particles, Psi_I(X_J): maps the generalized
+// coordinates d_I to the physical displacement u(X_J) = sum_I Psi_I(X_J) d_I.
+struct NodalInterpolation {
+  std::vector<Index> row_offset;
+  std::vector<Index> col;
+  std::vector<double> psi;
+};
+
+GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
+                                         Integration scheme);
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk);
+NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk);
+
+// F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).
+void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& F);
+
+// f_I = sum_L V_L P_L b_I(X_L): the internal force (P the first Piola-Kirchhoff stress per row).
+void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f);
+
+}  // namespace rkpm::rk

@@ -1,0 +1,109 @@
+// One deformable body: its particle cloud, the RK operators built once on the
+// reference configuration, its material, and its state.
+//
+// State is stored as flat arrays per particle. The kinematic unknowns are the
+// generalized displacements d_I of the RK approximation; the physical displacement
+// at a particle is u(X_J) = sum_I Psi_I(X_J) d_I (see `physical_displacement`).
+// x_I = X_I + d_I are the generalized positions the force loop and the surface
+// terms use: for smooth fields they differ from X_J + u(X_J) by O(h^2).
+#pragma once
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/materials/liquid_crystal_elastomer.hpp"
+#include "rkpm/materials/mooney_rivlin.hpp"
+#include "rkpm/particles/cloud.hpp"
+#include "rkpm/rk/nodal_integration.hpp"
+#include "rkpm/sim/essential_bc.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace rkpm::sim {
+
+// Mooney-Rivlin parameters per integration point (uniform or graded, Eq. 18).
+struct MooneyRivlinMaterial {
+  std::vector<materials::MooneyRivlin> at_point;
+};
+
+// Active liquid-crystal elastomer (Eq. 1-4); its director lives in Body::director.
+struct LCEMaterial {
+  materials::LiquidCrystalElastomer model;
+};
+
+using Material = std::variant<MooneyRivlinMaterial, LCEMaterial>;
+
+// The director field of an LCE body (Eq. 5-8): present only in such bodies.
+struct DirectorField {
+  std::vector<Vec3> h;                 // current director per particle (unit)
+  std::vector<Vec3> h0;                // reference director per particle (unit)
+  std::vector<Mat3> grad_h;            // Grad_X h per integration point (Frank term only)
+  std::vector<Mat3> frank_flux;        // dW/d(Grad_X h) per point (Frank term only)
+  std::vector<Vec3> frank_divergence;  // Div_X of the flux at particles (Frank term only)
+  std::vector<Vec3> rate;              // dh/dt
+  std::vector<Mat3> F_rate;            // dF/dt per point (velocity gradient l = dF/dt F^-1)
+  std::vector<Vec3> normals;           // scratch: current outward normals of the surface
+  bool evolve = true;                  // integrate Eq. 5-7
+  bool anchored = true;                // Eq. 8: h = current outward normal on the surface
+  bool frank = false;                  // kappa > 0: the gradient terms are built
+};
+
+struct Body {
+  std::string name;
+  int id = 0;
+  particles::Cloud cloud;
+  double density = 0.0;                // reference density rho0 [kg/m^3]
+
+  std::unique_ptr<rk::RKApproximation> rk;  // refers to cloud.X: a Body never moves
+  rk::GradientOperator gradient;            // smoothed gradients b_I(X_L), weights V_L
+  rk::BoundaryQuadrature boundary;          // surface quadrature consistent with the cells
+  rk::NodalInterpolation interpolation;     // Psi_I(X_J)
+  std::vector<double> mass;                 // lumped: rho0 V_I [kg]
+  std::vector<double> spacing;              // shortest mesh edge at each particle [m]
+
+  std::vector<Vec3> d, v, a;                // generalized displacement, velocity, acceleration
+  std::vector<Vec3> x;                      // X + d
+  std::vector<Vec3> force;                  // total force of this step [N]
+  std::vector<Mat3> F, P;                   // per integration point
+
+  Material material;
+  std::optional<DirectorField> director;
+  EssentialBC constraints;
+
+  Body() = default;
+  Body(const Body&) = delete;
+  Body& operator=(const Body&) = delete;
+
+  std::size_t size() const { return cloud.size(); }
+  bool is_lce() const { return std::holds_alternative<LCEMaterial>(material); }
+};
+
+// x = X + d.
+void update_positions(Body& body);
+
+// F at every integration point, the director gradient where the Frank term needs it,
+// the first Piola-Kirchhoff stress, and body.force = -f_int (the internal force).
+void compute_internal_forces(Body& body);
+
+// Stored (passive) energy sum_L V_L W(F_L) [J]; active stress is not stored energy.
+double strain_energy(const Body& body);
+
+// Physical displacement u(X_J) = sum_I Psi_I(X_J) d_I at every particle.
+void physical_displacement(const Body& body, std::vector<Vec3>& u);
+
+// Current outward unit normals of the boundary particles (area-weighted over the
+// boundary faces at the generalized positions x), indexed like cloud.boundary_particles.
+void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
+
+// Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
+// of Eq. 7 with the current velocity gradient, renormalisation to unit length, and
+// h = current outward normal on the surface when anchored). Also returns the work
+// rate of the active stress (Eq. 1), sum_L V_L P_a : dF/dt [W]. LCE bodies only.
+double advance_director(Body& body, double dt);
+
+// Largest stable time step of the body's material: safety * min_I spacing_I / c_I.
+double material_stable_dt(const Body& body);
+
+}  // namespace rkpm::sim

@@ -1,0 +1,25 @@
+// Builds a World from a validated scene: clouds, RK operators, materials, initial
+// fields, boundary conditions and exactly the terms the scene declares.
+#pragma once
+
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/integrator.hpp"
+#include "rkpm/sim/world.hpp"
+
+#include <memory>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+// A scene that validated but cannot be built (a cloud file the importer rejects,
+// a support too small for the cloud, a term this version does not provide). The
+// message names the scene file and the body or term; the program exits with 2.
+struct SetupError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+std::unique_ptr<World> build_world(const scene::Scene& scene);
+
+IntegratorSettings integrator_settings(const scene::Scene& scene);
+
+}  // namespace rkpm::sim

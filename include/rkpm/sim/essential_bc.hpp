@@ -1,0 +1,72 @@
+// Essential (displacement) boundary conditions by the transformation method.
+//
+// RK shape functions do not interpolate: the physical displacement at particle J is
+// u(X_J) = sum_I Psi_I(X_J) d_I, not the generalized coordinate d_J. Fixing d_J would
+// impose the condition only approximately and break the patch test. Instead, for
+// every constrained component (particle J in the set C of one axis) we impose
+//     sum_I Lambda_JI d_I = ubar_J,   Lambda_JI = Psi_I(X_J),
+// and eliminate the constrained coordinates: d_C = Lambda_CC^-1 (ubar_C - Lambda_CF d_F).
+// Virtual displacements then satisfy delta d_C = -Lambda_CC^-1 Lambda_CF delta d_F, so the
+// force that drives the free coordinates is the transformed one
+//     f~_F = f_F - Lambda_CF^T Lambda_CC^-T f_C,
+// and the lumped mass of the free coordinates is kept (the usual lumped
+// transformation, Chen et al. 1996). Each axis has its own set and factorization,
+// built once; the step costs two sparse solves per constrained axis.
+#pragma once
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/rk/nodal_integration.hpp"
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace rkpm::sim {
+
+struct ConstrainedComponent {
+  Index particle;
+  int axis;
+  double velocity;  // prescribed velocity of u(X_J) along axis [m/s]; 0 = fixed
+};
+
+class EssentialBC {
+ public:
+  EssentialBC();
+  ~EssentialBC();
+  EssentialBC(EssentialBC&&) noexcept;
+  EssentialBC& operator=(EssentialBC&&) noexcept;
+
+  // `interp` gives Psi_I(X_J); `d` the generalized displacements at set-up (their
+  // physical values at the constrained particles become the initial targets).
+  EssentialBC(const rk::NodalInterpolation& interp, std::vector<ConstrainedComponent> components,
+              const std::vector<Vec3>& d);
+
+  bool empty() const { return components_ == 0; }
+  std::size_t size() const { return components_; }
+
+  // Replaces the constrained components of f by zero and the free ones by the
+  // transformed force f~_F. Returns the work rate of the reactions, sum R . ubar_dot [W].
+  double transform_forces(std::vector<Vec3>& f) const;
+
+  // Advances the targets by their prescribed velocities over dt, then sets d_C and v_C
+  // from the free coordinates so that the constraints hold exactly.
+  void advance(double dt, std::vector<Vec3>& d, std::vector<Vec3>& v);
+
+  // Re-imposes the constraints without advancing time (after set-up or restart).
+  void impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const;
+
+  // Particle/axis pairs that are constrained, for masks in the integrator.
+  bool constrained(Index particle, int axis) const;
+
+  // Targets, for checkpoints: the constrained displacements at the current time.
+  std::vector<double> targets() const;
+  void set_targets(const std::vector<double>& t);
+
+ private:
+  struct Axis;
+  std::array<std::unique_ptr<Axis>, 3> axes_;
+  std::vector<std::array<char, 3>> mask_;
+  std::size_t components_ = 0;
+};
+
+}  // namespace rkpm::sim

@@ -1,0 +1,19 @@
+// What a frame shows: every body in one unstructured grid, at the physical
+// positions X + u(X), with the fields the bodies' physics provide.
+#pragma once
+
+#include "rkpm/io/frame.hpp"
+#include "rkpm/sim/world.hpp"
+
+#include <vector>
+
+namespace rkpm::sim {
+
+enum class CellOutput { Mesh, Points };
+
+// Point fields: displacement, velocity (physical, interpolated with Psi), body_id,
+// volume, J, cauchy_stress (9 components), von_mises; director where a body has one
+// (zero vectors elsewhere). `positions` receives the points the frame refers to.
+io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions);
+
+}  // namespace rkpm::sim

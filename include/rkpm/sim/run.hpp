@@ -1,0 +1,33 @@
+// Running a scene from start to finish: set-up, time loop, frames, checkpoints,
+// the summary, and the exit status the command line reports.
+#pragma once
+
+#include "rkpm/scene/scene.hpp"
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+namespace rkpm::sim {
+
+// Process exit codes of `rkpm run`.
+enum ExitCode : int {
+  kSuccess = 0,
+  kInternalError = 1,
+  kBadInput = 2,     // the scene (or a file it names) is wrong; nothing was written
+  kUnstable = 3,     // the simulation blew up; the last good frame is kept
+  kNotConverged = 4, // relaxation reached max_steps before its convergence criterion
+};
+
+struct RunOptions {
+  std::filesystem::path out_dir;      // where frames, checkpoints and summary.json go
+  std::filesystem::path restart;      // checkpoint to resume from (empty: start fresh)
+  std::int64_t max_steps_override = 0;  // > 0: stop after this many steps (tests, restarts)
+  bool allow_unstable_dt = false;     // testing: keep a user dt above the stable estimate
+  bool quiet = false;                 // no progress line
+};
+
+// Runs the scene; messages go to `log` (progress, warnings, diagnoses). Returns an ExitCode.
+int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream& log);
+
+}  // namespace rkpm::sim

@@ -1,0 +1,63 @@
+// Everything a simulation advances: the bodies, the physics terms the scene
+// declared, and the clock. A term that the scene does not declare is never built.
+#pragma once
+
+#include "rkpm/sim/body.hpp"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rkpm::io {
+class Json;
+}
+
+namespace rkpm::sim {
+
+struct World;
+
+// A physics term beyond each body's own material: loads, constraints, contact,
+// surface tension. One virtual call per term per step, never per particle.
+class Term {
+ public:
+  virtual ~Term() = default;
+  virtual std::string name() const = 0;
+  // Adds this term's forces to Body::force at the current positions.
+  virtual void add_forces(World& world) = 0;
+  // Conservative terms store energy (interface, constraint); the others do work,
+  // reported as power at the current velocities.
+  virtual double stored_energy(const World&) const { return 0.0; }
+  virtual double power(const World&) const { return 0.0; }
+  // Largest stable time step this term allows (stiff contact, etc.).
+  virtual double stable_dt(const World&) const { return std::numeric_limits<double>::infinity(); }
+  // Adds the term's own metrics to the run summary.
+  virtual void report(const World&, io::Json&) const {}
+  // Checkpoint state beyond the bodies (empty for stateless terms).
+  virtual std::vector<double> save_state() const { return {}; }
+  virtual void load_state(const std::vector<double>&) {}
+};
+
+struct World {
+  std::vector<std::unique_ptr<Body>> bodies;
+  std::vector<std::unique_ptr<Term>> terms;
+  double time = 0.0;
+  std::int64_t step = 0;
+
+  std::size_t particle_count() const {
+    std::size_t n = 0;
+    for (const auto& b : bodies) n += b->size();
+    return n;
+  }
+  Body* find_body(const std::string& name) const {
+    for (const auto& b : bodies)
+      if (b->name == name) return b.get();
+    return nullptr;
+  }
+};
+
+// Internal forces of every body, then every term's forces.
+void compute_forces(World& world);
+
+}  // namespace rkpm::sim

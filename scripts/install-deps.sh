@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages rkpm needs to build, test and plot (as root).
+# Every dependency is a Debian package: nothing is downloaded at build time.
+set -euo pipefail
+
+packages=(
+  build-essential cmake g++ make   # toolchain (g++ 12, cmake 3.25)
+  libeigen3-dev                    # Eigen 3.4: small dense algebra, sparse LU
+  libnanoflann-dev                 # nanoflann 1.4.3: kd-trees for neighbours and contact pairs
+  libvtk9-dev                      # VTK 9.1: .vtu/.pvd output and .vtu import
+  libtomlplusplus-dev              # toml++ 3.3: scene files
+  libcli11-dev                     # CLI11: command line
+  libfmt-dev                       # fmt: messages
+  libgtest-dev                     # GoogleTest: the test suite
+  libbenchmark-dev                 # Google Benchmark: bench/
+  gnuplot-nox                      # PNG plots of the studies
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]}; run as root (or install them)" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q --no-install-recommends "${missing[@]}"

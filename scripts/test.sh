@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# README command (b): install what is missing, build, run the whole test suite twice:
+# an optimised Release build, then a Debug build under AddressSanitizer and
+# UndefinedBehaviorSanitizer. Exits non-zero if anything fails.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+bash "$here/scripts/install-deps.sh"
+jobs=$(nproc)
+
+echo "== Release build and tests"
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$here/build" -j"$jobs"
+ctest --test-dir "$here/build" --output-on-failure -j"$jobs"
+
+if [ "${RKPM_SKIP_SANITIZERS:-0}" != 1 ]; then
+  echo "== Debug build under AddressSanitizer + UndefinedBehaviorSanitizer and tests"
+  cmake -S "$here" -B "$here/build-asan" -DCMAKE_BUILD_TYPE=Debug -DRKPM_SANITIZE=ON -DRKPM_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$here/build-asan" -j"$jobs"
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir "$here/build-asan" --output-on-failure -j"$jobs"
+fi

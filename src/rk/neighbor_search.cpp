@@ -1,0 +1,45 @@
+#include "rkpm/rk/neighbor_search.hpp"
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+
+namespace rkpm::rk {
+
+namespace {
+// nanoflann's dataset adaptor over our own storage: no copy of the points.
+struct PointsAdaptor {
+  const std::vector<Vec3>& pts;
+  std::size_t kdtree_get_point_count() const { return pts.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return pts[i][static_cast<int>(dim)]; }
+  template <class BBox>
+  bool kdtree_get_bbox(BBox&) const { return false; }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>,
+                                                   PointsAdaptor, 3, Index>;
+}  // namespace
+
+struct NeighborSearch::Tree {
+  PointsAdaptor adaptor;
+  KdTree index;
+  Tree(const std::vector<Vec3>& pts, int leaf)
+      : adaptor{pts}, index(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(static_cast<std::size_t>(leaf))) {
+    index.buildIndex();
+  }
+};
+
+NeighborSearch::NeighborSearch(const std::vector<Vec3>& points, int leaf_size)
+    : points_(points), tree_(std::make_unique<Tree>(points, leaf_size)) {}
+
+NeighborSearch::~NeighborSearch() = default;
+
+void NeighborSearch::query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const {
+  result.clear();
+  if (points_.empty()) return;
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  tree_->index.radiusSearch(x.data(), radius * radius, result, params);  // squared radius
+  std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+}  // namespace rkpm::rk

@@ -1,0 +1,261 @@
+#include "rkpm/rk/nodal_integration.hpp"
+
+#include "rkpm/particles/cloud.hpp"
+#include "rkpm/particles/dual_cells.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace rkpm::rk {
+
+namespace {
+
+// Collects the first failure (lowest particle id) of a parallel loop, so the
+// message does not depend on thread scheduling; exceptions must not cross the
+// OpenMP region.
+class FirstError {
+ public:
+  void record(Index particle, std::string message) {
+#pragma omp critical(rkpm_first_error)
+    if (particle < particle_) {
+      particle_ = particle;
+      message_ = std::move(message);
+    }
+  }
+  void rethrow() const {
+    if (particle_ != std::numeric_limits<Index>::max()) throw ApproximationError(message_);
+  }
+
+ private:
+  Index particle_ = std::numeric_limits<Index>::max();
+  std::string message_;
+};
+
+// Per-thread dense accumulator over particles with the list of touched ids.
+struct RowAccumulator {
+  std::vector<Vec3> value;
+  std::vector<char> used;
+  std::vector<Index> touched;
+  explicit RowAccumulator(std::size_t n) : value(n, Vec3::Zero()), used(n, 0) {}
+  void add(Index i, const Vec3& v) {
+    if (!used[static_cast<std::size_t>(i)]) {
+      used[static_cast<std::size_t>(i)] = 1;
+      touched.push_back(i);
+    }
+    value[static_cast<std::size_t>(i)] += v;
+  }
+  // Moves the row out (sorted by particle id) and resets the touched slots.
+  void flush(double scale, std::vector<std::pair<Index, Vec3>>& row) {
+    std::sort(touched.begin(), touched.end());
+    row.clear();
+    for (Index i : touched) {
+      row.emplace_back(i, value[static_cast<std::size_t>(i)] * scale);
+      value[static_cast<std::size_t>(i)].setZero();
+      used[static_cast<std::size_t>(i)] = 0;
+    }
+    touched.clear();
+  }
+};
+
+std::string particle_label(const particles::Cloud& cloud, Index i) {
+  return fmt::format("cloud '{}', particle {}", cloud.name, i);
+}
+
+GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows, std::vector<double> weight,
+                         Index n_particles) {
+  GradientOperator op;
+  op.row_offset.assign(rows.size() + 1, 0);
+  for (std::size_t r = 0; r < rows.size(); ++r) op.row_offset[r + 1] = op.row_offset[r] + static_cast<Index>(rows[r].size());
+  op.col.resize(static_cast<std::size_t>(op.row_offset.back()));
+  op.grad.resize(op.col.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    std::size_t k = static_cast<std::size_t>(op.row_offset[r]);
+    for (const auto& [i, b] : rows[r]) {
+      op.col[k] = i;
+      op.grad[k] = b;
+      ++k;
+    }
+    std::vector<std::pair<Index, Vec3>>().swap(rows[r]);
+  }
+  op.weight = std::move(weight);
+  op.build_transpose(n_particles);
+  return op;
+}
+
+}  // namespace
+
+void GradientOperator::build_transpose(Index n_particles) {
+  t_offset.assign(static_cast<std::size_t>(n_particles) + 1, 0);
+  for (Index i : col) ++t_offset[static_cast<std::size_t>(i) + 1];
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n_particles); ++i) t_offset[i + 1] += t_offset[i];
+  t_entry.resize(col.size());
+  t_row.resize(col.size());
+  std::vector<Index> fill(t_offset.begin(), t_offset.end() - 1);
+  for (Index r = 0; r < n_rows(); ++r)
+    for (Index k = row_offset[static_cast<std::size_t>(r)]; k < row_offset[static_cast<std::size_t>(r) + 1]; ++k) {
+      const auto slot = static_cast<std::size_t>(fill[static_cast<std::size_t>(col[static_cast<std::size_t>(k)])]++);
+      t_entry[slot] = k;
+      t_row[slot] = r;
+    }
+}
+
+GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
+                                         Integration scheme) {
+  const auto n = static_cast<Index>(cloud.size());
+  std::vector<std::vector<std::pair<Index, Vec3>>> rows(static_cast<std::size_t>(n));
+  std::vector<double> weight(static_cast<std::size_t>(n), 0.0);
+  FirstError error;
+  const particles::DualCells cells(cloud);
+
+#pragma omp parallel
+  {
+    ShapeValues sv;
+    std::vector<particles::DualFacet> facets;
+    RowAccumulator acc(static_cast<std::size_t>(n));
+#pragma omp for schedule(dynamic, 64)
+    for (Index L = 0; L < n; ++L) {
+      const Vec3& XL = cloud.X[static_cast<std::size_t>(L)];
+      if (scheme == Integration::Direct) {
+        if (!rk.evaluate(XL, sv, true)) {
+          error.record(L, "");  // message filled below, outside the hot path
+          continue;
+        }
+        auto& row = rows[static_cast<std::size_t>(L)];
+        row.reserve(sv.ids.size());
+        for (std::size_t k = 0; k < sv.ids.size(); ++k) row.emplace_back(sv.ids[k], sv.grad[k]);
+        weight[static_cast<std::size_t>(L)] = cloud.volume[static_cast<std::size_t>(L)];
+        continue;
+      }
+      cells.facets(L, facets);
+      double volume = 0.0;
+      bool ok = true;
+      for (const auto& f : facets) {
+        volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact for the closed cell
+        if (!rk.evaluate(f.point, sv, false)) {
+          ok = false;
+          break;
+        }
+        for (std::size_t k = 0; k < sv.ids.size(); ++k) acc.add(sv.ids[k], sv.psi[k] * f.area);
+      }
+      if (!ok || !(volume > 0.0)) {
+        acc.flush(0.0, rows[static_cast<std::size_t>(L)]);
+        error.record(L, "");
+        continue;
+      }
+      acc.flush(1.0 / volume, rows[static_cast<std::size_t>(L)]);
+      weight[static_cast<std::size_t>(L)] = volume;
+    }
+  }
+  try {
+    error.rethrow();
+  } catch (const ApproximationError&) {
+    // Re-run the first failing particle serially to produce the full diagnosis.
+    for (Index L = 0; L < n; ++L) {
+      if (!rows[static_cast<std::size_t>(L)].empty()) continue;
+      ShapeValues sv;
+      const std::string what = particle_label(cloud, L);
+      if (scheme == Integration::Direct) {
+        rk.evaluate_or_throw(cloud.X[static_cast<std::size_t>(L)], sv, true, what);
+      } else {
+        std::vector<particles::DualFacet> facets;
+        cells.facets(L, facets);
+        for (const auto& f : facets)
+          rk.evaluate_or_throw(f.point, sv, false, what + " (a quadrature point on its smoothing-cell boundary)");
+        throw ApproximationError(fmt::format("{}: its smoothing cell has no positive volume", what));
+      }
+    }
+    throw;
+  }
+  return flatten(rows, std::move(weight), n);
+}
+
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk) {
+  BoundaryQuadrature q;
+  const particles::DualCells cells(cloud);
+  std::vector<particles::DualFacet> facets;
+  for (Index L : cloud.boundary_particles) {
+    cells.facets(L, facets);
+    for (const auto& f : facets)
+      if (f.on_boundary) {
+        q.point.push_back(f.point);
+        q.area.push_back(f.area);
+        q.owner.push_back(L);
+        q.surface_mask.push_back(cloud.surface_mask.empty() ? 0u : cloud.surface_mask[L]);
+      }
+  }
+  const std::size_t m = q.point.size();
+  std::vector<ShapeValues> values(m);
+  FirstError error;
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t p = 0; p < m; ++p)
+    if (!rk.evaluate(q.point[p], values[p], false)) error.record(q.owner[p], "");
+  try {
+    error.rethrow();
+  } catch (const ApproximationError&) {
+    for (std::size_t p = 0; p < m; ++p)
+      rk.evaluate_or_throw(q.point[p], values[p], false,
+                           particle_label(cloud, q.owner[p]) + " (a boundary quadrature point)");
+  }
+  q.row_offset.assign(m + 1, 0);
+  for (std::size_t p = 0; p < m; ++p) {
+    q.row_offset[p + 1] = q.row_offset[p] + static_cast<Index>(values[p].ids.size());
+    q.col.insert(q.col.end(), values[p].ids.begin(), values[p].ids.end());
+    q.psi.insert(q.psi.end(), values[p].psi.begin(), values[p].psi.end());
+  }
+  return q;
+}
+
+NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk) {
+  const std::size_t n = cloud.size();
+  std::vector<ShapeValues> values(n);
+  FirstError error;
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t j = 0; j < n; ++j)
+    if (!rk.evaluate(cloud.X[j], values[j], false)) error.record(static_cast<Index>(j), "");
+  try {
+    error.rethrow();
+  } catch (const ApproximationError&) {
+    for (std::size_t j = 0; j < n; ++j)
+      rk.evaluate_or_throw(cloud.X[j], values[j], false, particle_label(cloud, static_cast<Index>(j)));
+  }
+  NodalInterpolation interp;
+  interp.row_offset.assign(n + 1, 0);
+  for (std::size_t j = 0; j < n; ++j) {
+    interp.row_offset[j + 1] = interp.row_offset[j] + static_cast<Index>(values[j].ids.size());
+    interp.col.insert(interp.col.end(), values[j].ids.begin(), values[j].ids.end());
+    interp.psi.insert(interp.psi.end(), values[j].psi.begin(), values[j].psi.end());
+  }
+  return interp;
+}
+
+void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& F) {
+  const Index n = op.n_rows();
+  F.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static)
+  for (Index L = 0; L < n; ++L) {
+    Mat3 f = Mat3::Zero();
+    for (Index k = op.row_offset[static_cast<std::size_t>(L)]; k < op.row_offset[static_cast<std::size_t>(L) + 1]; ++k)
+      f.noalias() += x[static_cast<std::size_t>(op.col[static_cast<std::size_t>(k)])] *
+                     op.grad[static_cast<std::size_t>(k)].transpose();
+    F[static_cast<std::size_t>(L)] = f;
+  }
+}
+
+void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f) {
+  const auto n = static_cast<Index>(op.t_offset.size()) - 1;
+  f.resize(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(static)
+  for (Index I = 0; I < n; ++I) {
+    Vec3 sum = Vec3::Zero();
+    for (Index t = op.t_offset[static_cast<std::size_t>(I)]; t < op.t_offset[static_cast<std::size_t>(I) + 1]; ++t) {
+      const auto row = static_cast<std::size_t>(op.t_row[static_cast<std::size_t>(t)]);
+      sum.noalias() += op.weight[row] * (P[row] * op.grad[static_cast<std::size_t>(op.t_entry[static_cast<std::size_t>(t)])]);
+    }
+    f[static_cast<std::size_t>(I)] = sum;
+  }
+}
+
+}  // namespace rkpm::rk

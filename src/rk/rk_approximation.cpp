@@ -1,0 +1,178 @@
+#include "rkpm/rk/rk_approximation.hpp"
+
+#include "rkpm/particles/cloud.hpp"
+#include "rkpm/rk/element_edges.hpp"
+
+#include <Eigen/Cholesky>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rkpm::rk {
+
+std::vector<double> local_spacing(const particles::Cloud& cloud) {
+  std::vector<double> h(cloud.size(), 0.0);
+  const auto& mesh = cloud.mesh;
+  for (int e = 0; e < mesh.n_elements(); ++e) {
+    const std::int32_t* nodes = mesh.element_nodes(e);
+    for (const auto& edge : element_edges(mesh.type[static_cast<std::size_t>(e)])) {
+      const Index a = nodes[edge[0]], b = nodes[edge[1]];
+      const double len = (cloud.X[static_cast<std::size_t>(a)] - cloud.X[static_cast<std::size_t>(b)]).norm();
+      h[static_cast<std::size_t>(a)] = std::max(h[static_cast<std::size_t>(a)], len);
+      h[static_cast<std::size_t>(b)] = std::max(h[static_cast<std::size_t>(b)], len);
+    }
+  }
+  return h;
+}
+
+namespace {
+std::vector<double> scaled(std::vector<double> h, double factor) {
+  for (double& v : h) v *= factor;
+  return h;
+}
+
+// Monomial basis H(xi) and its derivatives dH/dxi_k, for N = 4 (linear) or 10 (quadratic).
+template <int N>
+struct MonomialBasis {
+  using Vec = Eigen::Matrix<double, N, 1>;
+  static Vec value(const Vec3& xi) {
+    Vec h;
+    h(0) = 1.0;
+    h(1) = xi.x();
+    h(2) = xi.y();
+    h(3) = xi.z();
+    if constexpr (N == 10) {
+      h(4) = xi.x() * xi.x();
+      h(5) = xi.y() * xi.y();
+      h(6) = xi.z() * xi.z();
+      h(7) = xi.x() * xi.y();
+      h(8) = xi.y() * xi.z();
+      h(9) = xi.z() * xi.x();
+    }
+    return h;
+  }
+  static Vec derivative(const Vec3& xi, int k) {
+    Vec d = Vec::Zero();
+    d(1 + k) = 1.0;
+    if constexpr (N == 10) {
+      d(4 + k) = 2.0 * xi(k);
+      if (k == 0) { d(7) = xi.y(); d(9) = xi.z(); }
+      if (k == 1) { d(7) = xi.x(); d(8) = xi.z(); }
+      if (k == 2) { d(8) = xi.y(); d(9) = xi.x(); }
+    }
+    return d;
+  }
+};
+}  // namespace
+
+RKApproximation::RKApproximation(const std::vector<Vec3>& X, std::vector<double> support_radius, RKSettings settings)
+    : X_(X), a_(std::move(support_radius)), settings_(settings), search_(X) {
+  if (a_.size() != X_.size()) throw std::invalid_argument("RKApproximation: one support radius per particle required");
+  for (std::size_t i = 0; i < a_.size(); ++i) {
+    if (!(a_[i] > 0.0) || !std::isfinite(a_[i]))
+      throw ApproximationError(fmt::format("particle {}: support radius {} is not a positive number", i, a_[i]));
+    a_max_ = std::max(a_max_, a_[i]);
+  }
+}
+
+RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings settings)
+    : RKApproximation(cloud.X, scaled(local_spacing(cloud), settings.support), settings) {}
+
+bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
+  return settings_.basis == Basis::Linear ? evaluate_basis<4>(x, out, with_gradient)
+                                          : evaluate_basis<10>(x, out, with_gradient);
+}
+
+void RKApproximation::evaluate_or_throw(const Vec3& x, ShapeValues& out, bool with_gradient,
+                                        const std::string& what) const {
+  if (evaluate(x, out, with_gradient)) return;
+  throw ApproximationError(fmt::format(
+      "{}: the reproducing-kernel moment matrix at ({:.6g}, {:.6g}, {:.6g}) is {} "
+      "({} particles in reach, {} needed for the {} basis; condition number {:.3g}, limit {:.3g}). "
+      "Increase the support size or refine the cloud.",
+      what, x.x(), x.y(), x.z(), out.condition > 0 && std::isfinite(out.condition) ? "badly conditioned" : "singular",
+      out.n_neighbors, basis_size(), settings_.basis == Basis::Linear ? "linear" : "quadratic", out.condition,
+      settings_.max_condition));
+}
+
+template <int N>
+bool RKApproximation::evaluate_basis(const Vec3& x, ShapeValues& out, bool with_gradient) const {
+  using Basis = MonomialBasis<N>;
+  using VecN = Eigen::Matrix<double, N, 1>;
+  using MatN = Eigen::Matrix<double, N, N>;
+
+  search_.query(x, a_max_, out.scratch);
+  out.ids.clear();
+  out.psi.clear();
+  out.grad.clear();
+  // Keep only the particles whose own support covers x; phi_I(x) > 0 for those.
+  const double scale = a_max_;
+  MatN M = MatN::Zero();
+  for (const auto& [id, d2] : out.scratch) {
+    const double a = a_[static_cast<std::size_t>(id)];
+    if (d2 >= a * a) continue;
+    const double w = evaluate_kernel(settings_.kernel, std::sqrt(d2) / a).w;
+    if (w <= 0.0) continue;
+    out.ids.push_back(id);
+    out.psi.push_back(w);  // phi_I for now; corrected below
+    const VecN h = Basis::value((X_[static_cast<std::size_t>(id)] - x) / scale);
+    M.noalias() += w * h * h.transpose();
+  }
+  out.n_neighbors = static_cast<int>(out.ids.size());
+  out.condition = 0.0;
+  if (out.n_neighbors < N) return false;
+
+  const Eigen::LDLT<MatN> ldlt(M);
+  const double rcond = ldlt.info() == Eigen::Success ? ldlt.rcond() : 0.0;
+  out.condition = rcond > 0.0 ? 1.0 / rcond : 0.0;
+  if (!(rcond > 0.0) || out.condition > settings_.max_condition || !ldlt.isPositive()) return false;
+
+  VecN e0 = VecN::Zero();
+  e0(0) = 1.0;
+  const VecN c = ldlt.solve(e0);  // correction coefficients: Psi_I = c . H_I phi_I
+
+  const std::size_t n = out.ids.size();
+  if (!with_gradient) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const VecN h = Basis::value((X_[static_cast<std::size_t>(out.ids[k])] - x) / scale);
+      out.psi[k] *= c.dot(h);
+    }
+    return true;
+  }
+
+  // Gradients: d/dx_k of c(x) . H((X_I - x)/d) phi_I(x), with dc = -M^-1 (dM) c.
+  MatN dM[3] = {MatN::Zero(), MatN::Zero(), MatN::Zero()};
+  out.grad.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Index id = out.ids[k];
+    const Vec3 r = x - X_[static_cast<std::size_t>(id)];
+    const double a = a_[static_cast<std::size_t>(id)];
+    const double dist = r.norm();
+    const auto kv = evaluate_kernel(settings_.kernel, dist / a);
+    const Vec3 dphi = dist > 0.0 ? Vec3(kv.dw_dq / (a * dist) * r) : Vec3::Zero();
+    out.grad[k] = dphi;  // d phi_I / dx for now
+    const Vec3 xi = -r / scale;
+    const VecN h = Basis::value(xi);
+    for (int j = 0; j < 3; ++j) {
+      const VecN dh = -Basis::derivative(xi, j) / scale;  // d xi / dx = -1/d
+      dM[j].noalias() += kv.w * (dh * h.transpose() + h * dh.transpose()) + dphi(j) * h * h.transpose();
+    }
+  }
+  VecN dc[3];
+  for (int j = 0; j < 3; ++j) dc[j] = -ldlt.solve(dM[j] * c);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 xi = (X_[static_cast<std::size_t>(out.ids[k])] - x) / scale;
+    const VecN h = Basis::value(xi);
+    const double phi = out.psi[k];
+    const double ch = c.dot(h);
+    Vec3 g;
+    for (int j = 0; j < 3; ++j)
+      g(j) = dc[j].dot(h) * phi - c.dot(Basis::derivative(xi, j)) / scale * phi + ch * out.grad[k](j);
+    out.grad[k] = g;
+    out.psi[k] = ch * phi;
+  }
+  return true;
+}
+
+}  // namespace rkpm::rk

@@ -1,0 +1,26 @@
+#include "rkpm/scene/scene.hpp"
+
+#include "rkpm/scene/param_registry.hpp"
+
+namespace rkpm::scene {
+
+const std::vector<std::string>& BodySpec::surfaces() const {
+  return ParamRegistry::instance().variant("body.cloud", generator())->surfaces;
+}
+
+const BodySpec* Scene::find_body(std::string_view name) const {
+  for (const auto& b : bodies) {
+    if (b.name() == name) return &b;
+  }
+  return nullptr;
+}
+
+std::vector<const TermSpec*> Scene::terms_of(std::string_view type) const {
+  std::vector<const TermSpec*> out;
+  for (const auto& t : terms) {
+    if (t.type() == type) out.push_back(&t);
+  }
+  return out;
+}
+
+}  // namespace rkpm::scene

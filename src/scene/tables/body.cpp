@@ -1,0 +1,115 @@
+// [[body]] and the sub-tables every body may have: director, RK approximation,
+// initial state, boundary conditions. The cloud and the material are variant
+// sections (cloud_generators.cpp, materials.cpp).
+#include "tables/tables.hpp"
+
+#include "rkpm/scene/param_set.hpp"
+
+#include <string>
+
+namespace rkpm::scene::tables {
+namespace {
+
+ParamTable director_section() {
+  ParamTable t;
+  t.section = "body.director";
+  t.help = "Director field h of a liquid-crystal-elastomer body (seed Eq. 1-8). Only allowed "
+           "when [body.material] model = \"lce\"; omitted, it takes these defaults.";
+  t.specs = {
+      ParamSpec::choice("initial", {"surface_normal", "radial", "fixed"}).defaults(std::string("surface_normal"))
+          .help("Initial director h0: surface_normal = the outward normal of the nearest boundary "
+                "particle; radial = away from the body's centroid; fixed = `vector` everywhere."),
+      ParamSpec::vec3("vector", "-").defaults(Vec3(0, 0, 1))
+          .help("The uniform initial director when initial = fixed (normalised; must be non-zero)."),
+      ParamSpec::choice("boundary", {"normal", "free"}).defaults(std::string("normal"))
+          .help("normal: h = h0 = n on the boundary (anchoring, Eq. 8). free: no anchoring."),
+      ParamSpec::boolean("evolve").defaults(true)
+          .help("Evolve h by the Allen-Cahn relaxation (Eq. 5-7) with the material's mobility."),
+  };
+  t.finish = [](ParamSet& p) {
+    const bool fixed = p.choice("initial") == "fixed";
+    if (!fixed && p.given("vector")) throw p.error("vector", "no vector unless initial = \"fixed\"");
+    if (fixed && p.vec3("vector").norm() == 0.0) throw p.error("vector", "a non-zero vector");
+  };
+  return t;
+}
+
+ParamTable rk_section() {
+  ParamTable t;
+  t.section = "body.rk";
+  t.help = "Reproducing-kernel approximation and nodal integration of the body.";
+  t.specs = {
+      ParamSpec::choice("kernel", {"cubic", "quintic"}).defaults(std::string("cubic"))
+          .help("Kernel function: cubic B-spline (C2) or quintic B-spline (C4)."),
+      ParamSpec::real("support", "-").at_least(1.0).at_most(4.0).defaults(2.0)
+          .help("Kernel support radius divided by the local particle spacing."),
+      ParamSpec::choice("basis", {"linear", "quadratic"}).defaults(std::string("linear"))
+          .help("Polynomial basis the shape functions reproduce exactly."),
+      ParamSpec::choice("integration", {"scni", "direct"}).defaults(std::string("scni"))
+          .help("scni: stabilized conforming nodal integration over the cloud's dual cells "
+                "(passes the patch test). direct: nodal gradients (unstable; for comparison only)."),
+  };
+  return t;
+}
+
+ParamTable initial_section() {
+  ParamTable t;
+  t.section = "body.initial";
+  t.help = "Initial state of the body; the reference configuration is the generated cloud.";
+  t.specs = {
+      ParamSpec::vec3("velocity", "m/s").defaults(Vec3::Zero()).help("Uniform initial velocity."),
+      ParamSpec::real("random_velocity", "m/s").at_least(0).defaults(0.0)
+          .help("Amplitude of an added random velocity per particle and component, uniform in "
+                "[-a, a], seeded by [integrator] seed."),
+      ParamSpec::vec3("stretch", "-").greater_than(0).defaults(Vec3::Ones())
+          .help("Initial homogeneous stretch about the body's centroid (principal stretches along x, y, z)."),
+  };
+  return t;
+}
+
+void check_boundary(ParamSet& p) {
+  const std::string& axes = p.text("axes");
+  bool ok = !axes.empty() && axes.size() <= 3;
+  for (std::size_t i = 0; i < axes.size() && ok; ++i) {
+    ok = (axes[i] == 'x' || axes[i] == 'y' || axes[i] == 'z') && axes.find(axes[i]) == i;
+  }
+  if (!ok) throw p.error("axes", "a non-empty subset of \"xyz\" with no repeated letter, e.g. \"xz\"");
+  if (p.choice("type") == "fixed" && p.given("value")) {
+    throw p.error("value", "no value unless type = \"velocity\" (fixed means zero displacement)");
+  }
+}
+
+ParamTable boundary_section() {
+  ParamTable t;
+  t.section = "body.boundary";
+  t.help = "Essential boundary condition on the particles of a named surface of the body's cloud.";
+  t.specs = {
+      ParamSpec::text("surface").mark_required().refers_to(Reference::surface)
+          .help("A surface of the body's cloud generator, or \"all\" for every boundary particle."),
+      ParamSpec::choice("type", {"fixed", "velocity"}).defaults(std::string("fixed"))
+          .help("fixed: the listed displacement components stay zero. velocity: they move at `value`."),
+      ParamSpec::vec3("value", "m/s").defaults(Vec3::Zero()).help("Prescribed velocity (type = velocity)."),
+      ParamSpec::text("axes").defaults(std::string("xyz")).help("Constrained components: a subset of \"xyz\"."),
+  };
+  t.finish = check_boundary;
+  return t;
+}
+
+}  // namespace
+
+ParamTable body() {
+  ParamTable t;
+  t.section = "body";
+  t.help = "A deformable body: a particle cloud, a material, initial fields and boundary conditions.";
+  t.specs = {
+      ParamSpec::text("name").mark_required().help("Unique name; terms refer to the body by it."),
+      ParamSpec::real("density", "kg/m^3").greater_than(0).defaults(1000.0).help("Reference mass density rho0."),
+  };
+  return t;
+}
+
+std::vector<ParamTable> body_details() {
+  return {director_section(), rk_section(), initial_section(), boundary_section()};
+}
+
+}  // namespace rkpm::scene::tables

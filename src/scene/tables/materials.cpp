@@ -1,0 +1,79 @@
+// Variants of [body.material]: one table per constitutive model.
+#include "tables/tables.hpp"
+
+#include "rkpm/scene/param_set.hpp"
+
+namespace rkpm::scene::tables {
+namespace {
+
+ParamTable variant(std::string name, std::string help) {
+  ParamTable t;
+  t.section = "body.material";
+  t.selector_key = "model";
+  t.selector_value = std::move(name);
+  t.help = std::move(help);
+  return t;
+}
+
+void check_mooney_rivlin(ParamSet& p) {
+  if (p.real("c1") + p.real("c2") <= 0.0) throw p.error("c2", "c1 + c2 > 0 (both are zero)");
+  const char* grade_keys[] = {"grade_a", "grade_b", "grade_length"};
+  if (p.choice("grade_axis") == "none") {
+    for (const char* key : grade_keys) {
+      if (p.given(key)) throw p.error(key, "no grading key unless grade_axis is \"x\", \"y\" or \"z\"");
+    }
+    return;
+  }
+  // The factor a*s + b (s = 0 at the body's minimum, 1 at grade_length) scales
+  // positive moduli; it must stay positive at both ends of the body.
+  const double a = p.real("grade_a"), b = p.real("grade_b");
+  if (b <= 0.0) throw p.error("grade_b", "grade_b > 0 (the factor a*s + b must stay positive at s = 0)");
+  if (a + b <= 0.0) throw p.error("grade_a", "grade_a + grade_b > 0 (the factor a*s + b must stay positive at s = 1)");
+}
+
+ParamTable mooney_rivlin() {
+  ParamTable t = variant("mooney_rivlin",
+                         "Compressible Mooney-Rivlin solid (seed Eq. 9-11), optionally graded along an "
+                         "axis (Eq. 18): every modulus is multiplied by a*s + b, s = (X_axis - X_min) / L0.");
+  t.specs = {
+      ParamSpec::real("c1", "Pa").at_least(0).mark_required().help("First Mooney-Rivlin constant (Eq. 9)."),
+      ParamSpec::real("c2", "Pa").at_least(0).defaults(0.0).help("Second Mooney-Rivlin constant (Eq. 9)."),
+      ParamSpec::real("lambda", "Pa").greater_than(0).mark_required()
+          .help("Volumetric constant of the (ln I3)^2 term (Eq. 9)."),
+      ParamSpec::choice("grade_axis", {"none", "x", "y", "z"}).defaults(std::string("none"))
+          .help("Axis along which the moduli vary (Eq. 18 uses y); none = homogeneous."),
+      ParamSpec::real("grade_a", "-").defaults(0.0).help("Slope a of the grading factor a*s + b (Eq. 18: 4)."),
+      ParamSpec::real("grade_b", "-").defaults(1.0).help("Offset b of the grading factor a*s + b (Eq. 18: 0.5)."),
+      ParamSpec::real("grade_length", "m").at_least(0).defaults(0.0)
+          .help("Length L0 over which s goes from 0 to 1; 0 = the body's extent along the axis."),
+  };
+  t.finish = check_mooney_rivlin;
+  return t;
+}
+
+ParamTable lce() {
+  ParamTable t = variant("lce",
+                         "Active liquid-crystal elastomer (seed Eq. 1-8): neo-classical free energy with "
+                         "step-length anisotropy, Frank elasticity, active stress and a director field "
+                         "(see [body.director]).");
+  t.specs = {
+      ParamSpec::real("mu", "Pa").greater_than(0).mark_required().help("Shear modulus mu (Eq. 2)."),
+      ParamSpec::real("bulk", "Pa").greater_than(0).mark_required()
+          .help("Penalty bulk modulus K that replaces the pressure p of Eq. 3 (p = -K ln J / J). "
+                "No default: it must be chosen relative to mu (100 to 1000 mu is nearly incompressible)."),
+      ParamSpec::real("s", "-").greater_than(0).at_most(100).defaults(2.0)
+          .help("Step-length anisotropy s = l_parallel / l_perpendicular (Eq. 2); 1 = isotropic."),
+      ParamSpec::real("kappa", "N").at_least(0).defaults(0.0).help("Frank modulus kappa (Eq. 2)."),
+      ParamSpec::real("mobility", "1/(Pa s)").at_least(0).defaults(0.0)
+          .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only."),
+      ParamSpec::real("zeta", "Pa").defaults(0.0)
+          .help("Activity zeta of the active stress -zeta h x h (Eq. 1); > 0 contractile."),
+  };
+  return t;
+}
+
+}  // namespace
+
+std::vector<ParamTable> materials() { return {lce(), mooney_rivlin()}; }
+
+}  // namespace rkpm::scene::tables

@@ -1,0 +1,84 @@
+// [scene], [integrator], [output]: what the run is and how it steps and writes.
+#include "tables/tables.hpp"
+
+#include "rkpm/scene/param_set.hpp"
+
+namespace rkpm::scene::tables {
+namespace {
+
+ParamTable scene_section() {
+  ParamTable t;
+  t.section = "scene";
+  t.help = "What the scene is. The name is used for the output file names.";
+  t.specs = {
+      ParamSpec::text("name").mark_required().help("Short name of the scene; output files are named after it."),
+      ParamSpec::text("description").defaults(std::string()).help("Free text describing the scene."),
+  };
+  return t;
+}
+
+void check_integrator(ParamSet& p) {
+  if (p.choice("mode") == "dynamic" && !p.has("t_end")) {
+    throw p.error("t_end", "a value when mode = \"dynamic\": the simulated end time [s]");
+  }
+  if (p.has("t_end") && p.real("dt") > p.real("t_end")) {
+    throw p.error("dt", "a time step no larger than t_end = " + format_value(p.real("t_end")) + " s");
+  }
+}
+
+ParamTable integrator_section() {
+  ParamTable t;
+  t.section = "integrator";
+  t.help = "Explicit time stepping (velocity Verlet) or fast relaxation to equilibrium.";
+  t.specs = {
+      ParamSpec::choice("mode", {"dynamic", "relax"}).defaults(std::string("dynamic"))
+          .help("dynamic: explicit dynamics up to t_end. relax: FIRE-style damped dynamics that "
+                "stops at static equilibrium (see relax_force_tol, relax_velocity_tol)."),
+      ParamSpec::real("t_end", "s").greater_than(0)
+          .absent_means("required if dynamic")
+          .help("Simulated end time. Required in dynamic mode; in relax mode it is an optional "
+                "limit on the pseudo-time."),
+      ParamSpec::real("dt", "s").at_least(0).defaults(0.0)
+          .help("Time step; 0 = automatic, dt_safety times the stable step of the current state."),
+      ParamSpec::real("dt_safety", "-").greater_than(0).at_most(1).defaults(0.5)
+          .help("Fraction of the estimated stable time step that is taken when dt = 0."),
+      ParamSpec::real("damping", "1/s").at_least(0).defaults(0.0)
+          .help("Mass-proportional damping coefficient c: force -c m v on every particle."),
+      ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})
+          .help("Hard limit on the number of steps; reaching it ends the run with an error."),
+      ParamSpec::real("relax_force_tol", "-").greater_than(0).defaults(1e-6)
+          .help("relax mode: converged when the residual force norm falls below this fraction of "
+                "the internal-force scale."),
+      ParamSpec::real("relax_velocity_tol", "-").greater_than(0).defaults(1e-8)
+          .help("relax mode: converged when the kinetic energy falls below this fraction of the "
+                "stored elastic energy."),
+      ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
+          .help("Seed of the random numbers used by the run (initial random velocities)."),
+  };
+  t.finish = check_integrator;
+  return t;
+}
+
+ParamTable output_section() {
+  ParamTable t;
+  t.section = "output";
+  t.help = "Frames (VTU files collected by a PVD file) and checkpoints.";
+  t.specs = {
+      ParamSpec::real("every", "s").greater_than(0)
+          .absent_means("t_end / 50")
+          .help("Simulated time between frames. Without it and without t_end (relax mode) only "
+                "the initial and final states are written."),
+      ParamSpec::choice("cells", {"mesh", "points"}).defaults(std::string("mesh"))
+          .help("mesh: write the particles with the cloud's mesh (surfaces render in ParaView). "
+                "points: particles only (vertex cells)."),
+      ParamSpec::integer("checkpoint_every").at_least(0).defaults(std::int64_t{0})
+          .help("Steps between checkpoints from which a run can be restarted; 0 = never."),
+  };
+  return t;
+}
+
+}  // namespace
+
+std::vector<ParamTable> run_sections() { return {scene_section(), integrator_section(), output_section()}; }
+
+}  // namespace rkpm::scene::tables

@@ -1,0 +1,293 @@
+#include "rkpm/sim/build.hpp"
+
+#include "rkpm/materials/graded_parameters.hpp"
+#include "rkpm/particles/generators.hpp"
+#include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/scene/cloud_recipe.hpp"
+#include "rkpm/sim/terms.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace rkpm::sim {
+
+namespace {
+
+template <class... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
+
+std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
+
+particles::Cloud make_cloud(const scene::BodySpec& spec) {
+  return std::visit(Overloaded{
+                        [](const particles::BlockSpec& s) { return particles::make_block(s); },
+                        [](const particles::SphereSpec& s) { return particles::make_sphere(s); },
+                        [](const particles::ShellSpec& s) { return particles::make_shell(s); },
+                        [](const scene::VtuImport& s) {
+                          particles::Cloud c = particles::import_vtu(s.path);
+                          if (s.scale != 1.0) {
+                            for (auto& x : c.X) x *= s.scale;
+                            for (auto& v : c.volume) v *= s.scale * s.scale * s.scale;
+                            for (auto& a : c.boundary_area) a *= s.scale * s.scale;
+                          }
+                          return c;
+                        },
+                    },
+                    scene::cloud_recipe(spec));
+}
+
+rk::RKSettings rk_settings(const scene::ParamSet& p) {
+  rk::RKSettings s;
+  s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
+  s.support = p.real("support");
+  s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
+  return s;
+}
+
+Vec3 centroid(const particles::Cloud& c) {
+  Vec3 sum = Vec3::Zero();
+  double v = 0.0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    sum += c.volume[i] * c.X[i];
+    v += c.volume[i];
+  }
+  return sum / v;
+}
+
+Material make_material(const scene::BodySpec& spec, const particles::Cloud& cloud) {
+  const auto& m = spec.material;
+  if (spec.model() == "lce") {
+    LCEMaterial lce;
+    lce.model.mu = m.real("mu");
+    lce.model.K = m.real("bulk");
+    lce.model.s = m.real("s");
+    lce.model.kappa = m.real("kappa");
+    lce.model.mobility = m.real("mobility");
+    lce.model.zeta = m.real("zeta");
+    lce.model.validate();
+    return lce;
+  }
+  materials::MooneyRivlin base;
+  base.c1 = m.real("c1");
+  base.c2 = m.real("c2");
+  base.lambda = m.real("lambda");
+  base.validate();
+  MooneyRivlinMaterial mr;
+  const std::string axis_name = m.choice("grade_axis");
+  if (axis_name == "none") {
+    mr.at_point.assign(cloud.size(), base);
+    return mr;
+  }
+  // Eq. 18: value = base * (a (X_axis - X_min) / L0 + b), L0 = the body's extent by default.
+  materials::GradedMooneyRivlin graded;
+  graded.base = base;
+  graded.grading.axis = axis_name == "x" ? 0 : axis_name == "y" ? 1 : 2;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const auto& X : cloud.X) {
+    lo = std::min(lo, X[graded.grading.axis]);
+    hi = std::max(hi, X[graded.grading.axis]);
+  }
+  graded.grading.x_min = lo;
+  graded.grading.length = m.real("grade_length") > 0.0 ? m.real("grade_length") : hi - lo;
+  graded.grading.slope = m.real("grade_a");
+  graded.grading.offset = m.real("grade_b");
+  graded.validate();
+  mr.at_point.reserve(cloud.size());
+  for (const auto& X : cloud.X) mr.at_point.push_back(graded.at(X));
+  return mr;
+}
+
+// Initial director (Eq. 8 and the text around it): the outward normal of the nearest
+// surface particle, oriented away from the body's centre so that a shell's wall carries
+// the outer normal through its thickness; or radial; or a fixed vector.
+DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
+  const auto& p = *spec.director;
+  const auto& cloud = body.cloud;
+  const auto& model = std::get<LCEMaterial>(body.material).model;
+  DirectorField dir;
+  const std::size_t n = cloud.size();
+  dir.h.resize(n);
+  const Vec3 centre = centroid(cloud);
+  const std::string initial = p.choice("initial");
+  if (initial == "fixed") {
+    const Vec3 h = p.vec3("vector").normalized();
+    std::fill(dir.h.begin(), dir.h.end(), h);
+  } else if (initial == "radial") {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec3 r = cloud.X[i] - centre;
+      dir.h[i] = r.norm() > 0.0 ? Vec3(r.normalized()) : Vec3::UnitZ();
+    }
+  } else {
+    std::vector<Vec3> surface;
+    for (Index b : cloud.boundary_particles) surface.push_back(cloud.X[b]);
+    const rk::NeighborSearch search(surface);
+    std::vector<std::pair<Index, double>> found;
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto bi = cloud.boundary_index[i];
+      Vec3 normal;
+      if (bi >= 0) {
+        normal = cloud.boundary_normal[bi];
+      } else {
+        // Nearest surface particle: grow the radius until one is found.
+        double r = body.spacing[i];
+        do {
+          search.query(cloud.X[i], r, found);
+          r *= 2.0;
+        } while (found.empty());
+        auto best = found.front();
+        for (const auto& f : found)
+          if (f.second < best.second) best = f;
+        normal = cloud.boundary_normal[best.first];
+      }
+      dir.h[i] = normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
+    }
+  }
+  dir.h0 = dir.h;
+  dir.evolve = p.flag("evolve");
+  dir.anchored = p.choice("boundary") == "normal";
+  dir.frank = model.kappa > 0.0;
+  dir.rate.assign(n, Vec3::Zero());
+  dir.F_rate.assign(n, Mat3::Identity());
+  if (dir.frank) {
+    dir.grad_h.assign(n, Mat3::Zero());
+    dir.frank_flux.assign(n, Mat3::Zero());
+    dir.frank_divergence.assign(n, Vec3::Zero());
+  }
+  return dir;
+}
+
+// Shortest mesh edge at each particle: the length scale of the stable time step.
+std::vector<double> shortest_edges(const particles::Cloud& cloud) {
+  std::vector<double> h(cloud.size(), INFINITY);
+  for (int e = 0; e < cloud.mesh.n_elements(); ++e) {
+    const auto* nodes = cloud.mesh.element_nodes(e);
+    const int m = cloud.mesh.element_size(e);
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) {
+        const double len = (cloud.X[nodes[i]] - cloud.X[nodes[j]]).norm();
+        h[nodes[i]] = std::min(h[nodes[i]], len);
+        h[nodes[j]] = std::min(h[nodes[j]], len);
+      }
+  }
+  return h;
+}
+
+// Uniform in [-1, 1) from a 64-bit generator (splitmix64): the same on every platform.
+struct Random {
+  std::uint64_t state;
+  double uniform() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    z ^= z >> 31;
+    return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
+  }
+};
+
+std::vector<ConstrainedComponent> constrained_components(const scene::BodySpec& spec, const particles::Cloud& cloud) {
+  std::vector<ConstrainedComponent> out;
+  for (const auto& bc : spec.boundaries) {
+    const std::string surface = bc.text("surface");
+    const std::uint32_t bit = surface == "all" ? 0u : cloud.surface_bit(surface);
+    const Vec3 value = bc.choice("type") == "velocity" ? bc.vec3("value") : Vec3::Zero();
+    const std::string axes = bc.text("axes");
+    for (Index p : cloud.boundary_particles) {
+      if (bit != 0u && !(cloud.surface_mask[p] & bit)) continue;
+      for (int a = 0; a < 3; ++a)
+        if (axes.find("xyz"[a]) != std::string::npos) out.push_back({p, a, value[a]});
+    }
+  }
+  return out;
+}
+
+std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed) {
+  auto body = std::make_unique<Body>();
+  body->name = spec.name();
+  body->id = id;
+  body->density = spec.body.real("density");
+  try {
+    body->cloud = make_cloud(spec);
+  } catch (const particles::CloudError& e) {
+    throw SetupError(fmt::format("{} body '{}': {}", where(spec.cloud), body->name, e.what()));
+  }
+  body->cloud.name = body->name;
+  const auto& cloud = body->cloud;
+  const std::size_t n = cloud.size();
+
+  try {
+    body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
+    const auto scheme = spec.rk.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
+    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme);
+    body->boundary = rk::build_boundary_quadrature(cloud, *body->rk);
+    body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk);
+  } catch (const rk::ApproximationError& e) {
+    throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
+  }
+  body->spacing = shortest_edges(cloud);
+  body->mass.resize(n);
+  for (std::size_t i = 0; i < n; ++i) body->mass[i] = body->density * cloud.volume[i];
+
+  try {
+    body->material = make_material(spec, cloud);
+  } catch (const std::invalid_argument& e) {
+    throw SetupError(fmt::format("{} body '{}': {}", where(spec.material), body->name, e.what()));
+  }
+
+  // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
+  const Vec3 stretch = spec.initial.vec3("stretch");
+  const Vec3 centre = centroid(cloud);
+  const Vec3 velocity = spec.initial.vec3("velocity");
+  const double noise = spec.initial.real("random_velocity");
+  Random random{seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id)};
+  body->d.resize(n);
+  body->v.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    body->d[i] = (stretch.array() - 1.0).matrix().cwiseProduct(cloud.X[i] - centre);
+    body->v[i] = velocity;
+    if (noise > 0.0) body->v[i] += noise * Vec3(random.uniform(), random.uniform(), random.uniform());
+  }
+  body->a.assign(n, Vec3::Zero());
+  body->x.resize(n);
+  body->force.assign(n, Vec3::Zero());
+  body->F.assign(n, Mat3::Identity());
+  body->P.assign(n, Mat3::Zero());
+  update_positions(*body);
+
+  if (spec.director) body->director = make_director(spec, *body);
+  try {
+    body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
+  } catch (const std::runtime_error& e) {
+    throw SetupError(fmt::format("{}: body '{}': {}", spec.body.file(), body->name, e.what()));
+  }
+  return body;
+}
+
+}  // namespace
+
+IntegratorSettings integrator_settings(const scene::Scene& scene) {
+  const auto& p = scene.integrator;
+  IntegratorSettings s;
+  s.mode = p.choice("mode") == "relax" ? Mode::Relax : Mode::Dynamic;
+  s.dt = p.real("dt");
+  s.dt_safety = p.real("dt_safety");
+  s.damping = p.real("damping");
+  s.relax_force_tol = p.real("relax_force_tol");
+  s.relax_velocity_tol = p.real("relax_velocity_tol");
+  return s;
+}
+
+std::unique_ptr<World> build_world(const scene::Scene& scene) {
+  auto world = std::make_unique<World>();
+  const auto seed = static_cast<std::uint64_t>(scene.integrator.integer("seed"));
+  int id = 0;
+  for (const auto& spec : scene.bodies) world->bodies.push_back(build_body(spec, id++, seed));
+  for (const auto& term : scene.terms) world->terms.push_back(make_term(term, *world));
+  return world;
+}
+
+}  // namespace rkpm::sim

@@ -1,0 +1,53 @@
+// Director evolution of liquid-crystal-elastomer bodies (seed Eq. 5-8).
+#include "rkpm/sim/body.hpp"
+
+namespace rkpm::sim {
+
+double advance_director(Body& body, double dt) {
+  const auto& model = std::get<LCEMaterial>(body.material).model;
+  DirectorField& dir = *body.director;
+  const auto n = static_cast<Index>(body.size());
+
+  // dF/dt = sum_I v_I (x) b_I: the smoothed velocity gradient in the reference frame.
+  rk::deformation_gradients(body.gradient, body.v, dir.F_rate);
+
+  double active = 0.0;
+  if (model.zeta != 0.0) {
+#pragma omp parallel for schedule(static) reduction(+ : active)
+    for (Index L = 0; L < n; ++L)
+      active += body.gradient.weight[L] * (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
+  }
+
+  if (dir.evolve) {
+#pragma omp parallel for schedule(static)
+    for (Index I = 0; I < n; ++I) {
+      materials::DirectorPoint p;
+      p.h = dir.h[I];
+      p.h0 = dir.h0[I];
+      p.grad_h = dir.frank ? dir.grad_h[I] : Mat3::Zero();
+      const Mat3 l = dir.F_rate[I] * body.F[I].inverse();
+      const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
+      dir.rate[I] = model.director_rate(body.F[I], p, l, frank);
+      const Vec3 h = dir.h[I] + dt * dir.rate[I];
+      dir.h[I] = h / h.norm();  // Eq. 7 has a component along h: keep |h| = 1
+    }
+  }
+
+  if (dir.anchored) {
+    // Eq. 8: h = n on the surface. The director is nematic (h ~ -h), so keep the sign
+    // closest to the current one: the inner wall of a shell, whose outward normal points
+    // into the cavity, keeps the orientation continued from the outer surface.
+    current_boundary_normals(body, dir.normals);
+    const auto& ids = body.cloud.boundary_particles;
+    const auto nb = static_cast<Index>(ids.size());
+#pragma omp parallel for schedule(static)
+    for (Index k = 0; k < nb; ++k) {
+      const Vec3& nrm = dir.normals[k];
+      Vec3& h = dir.h[ids[k]];
+      h = h.dot(nrm) >= 0.0 ? nrm : Vec3(-nrm);
+    }
+  }
+  return active;
+}
+
+}  // namespace rkpm::sim

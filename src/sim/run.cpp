@@ -1,0 +1,166 @@
+#include "rkpm/sim/run.hpp"
+
+#include "rkpm/io/json.hpp"
+#include "rkpm/io/progress.hpp"
+#include "rkpm/io/pvd_series.hpp"
+#include "rkpm/io/run_summary.hpp"
+#include "rkpm/sim/build.hpp"
+#include "rkpm/sim/checkpoint.hpp"
+#include "rkpm/sim/output.hpp"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <ostream>
+
+namespace rkpm::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+io::Json energy_json(const EnergyLedger& e) {
+  io::Json j = io::Json::object();
+  j.set("kinetic", e.kinetic);
+  j.set("strain", e.strain);
+  j.set("interface", e.interface);
+  j.set("external_work", e.external);
+  j.set("active_work", e.active);
+  j.set("dissipated", e.dissipated);
+  j.set("initial", e.initial);
+  j.set("relative_error", e.relative_error());
+  return j;
+}
+
+}  // namespace
+
+int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream& log) {
+  const auto wall_start = Clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
+
+  // Everything that can fail on user input happens before the output directory exists.
+  std::unique_ptr<World> world;
+  try {
+    world = build_world(scene);
+  } catch (const SetupError& e) {
+    log << "error: " << e.what() << "\n";
+    return kBadInput;
+  }
+  IntegratorSettings settings = integrator_settings(scene);
+  settings.allow_unstable_dt = options.allow_unstable_dt;
+  Integrator integrator(*world, settings);
+  const bool relax = settings.mode == Mode::Relax;
+  const double t_end = scene.integrator.has("t_end") ? scene.integrator.real("t_end") : INFINITY;
+  const double every = scene.output.has("every") ? scene.output.real("every") : t_end / 50.0;
+  const auto cells = scene.output.choice("cells") == "points" ? CellOutput::Points : CellOutput::Mesh;
+  const std::int64_t checkpoint_every = scene.output.integer("checkpoint_every");
+  std::int64_t max_steps = scene.integrator.integer("max_steps");
+  if (options.max_steps_override > 0) max_steps = options.max_steps_override;
+  const std::uint64_t digest = file_digest(scene.file);
+
+  std::filesystem::create_directories(options.out_dir);
+  const auto checkpoint_path = options.out_dir / "checkpoint.bin";
+  RunClock clock;
+  std::optional<io::PvdSeries> series;
+  integrator.initialize();
+  if (!options.restart.empty()) {
+    try {
+      read_checkpoint(options.restart, *world, integrator, clock, digest);
+      series = io::PvdSeries::resume(options.out_dir, "frames", world->time);
+    } catch (const std::exception& e) {
+      log << "error: " << e.what() << "\n";
+      return kBadInput;
+    }
+  } else {
+    series.emplace(options.out_dir, "frames");
+  }
+  if (integrator.dt_clamped())
+    log << fmt::format("warning: [integrator] dt = {:.3g} s exceeds the stable step {:.3g} s; using {:.3g} s\n",
+                       settings.dt, integrator.stable_dt(), integrator.dt());
+
+  std::vector<Vec3> positions;
+  auto write_frame = [&] {
+    series->write(world->time, make_frame(*world, cells, positions));
+    ++clock.frames;
+  };
+  if (options.restart.empty()) {
+    write_frame();
+    clock.next_output = every;
+  }
+
+  io::Progress progress(log, !options.quiet && io::stderr_is_terminal());
+  std::string status = "completed", diagnosis;
+  int code = kSuccess;
+  try {
+    while (true) {
+      if (relax ? (world->step > 0 && integrator.converged()) : world->time >= t_end * (1.0 - 1e-12)) break;
+      if (world->step >= max_steps) {
+        if (relax) {
+          status = "not converged";
+          code = kNotConverged;
+        } else if (options.max_steps_override > 0) {
+          status = "stopped at max steps";
+        } else {
+          status = "max_steps reached";
+        }
+        break;
+      }
+      integrator.step();
+      if (world->time >= clock.next_output * (1.0 - 1e-12)) {
+        write_frame();
+        clock.next_output += every;
+      }
+      if (checkpoint_every > 0 && world->step % checkpoint_every == 0)
+        write_checkpoint(checkpoint_path, *world, integrator, clock, digest);
+      if (!options.quiet) progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed());
+    }
+    // The final state is always in the series.
+    if (series->entries().empty() || series->entries().back().time < world->time) write_frame();
+  } catch (const BlowUp& e) {
+    status = "unstable";
+    diagnosis = e.what();
+    code = kUnstable;
+  } catch (const io::NonFiniteValue& e) {
+    status = "unstable";
+    diagnosis = std::string("a non-finite value reached the output: ") + e.what();
+    code = kUnstable;
+  }
+  if (!options.quiet) progress.finish();
+
+  io::RunSummary summary;
+  summary.scene = scene.file;
+  for (const auto& b : world->bodies) summary.particle_counts.emplace_back(b->name, static_cast<std::int64_t>(b->size()));
+  summary.steps = world->step;
+  summary.simulated_time = world->time;
+  summary.wall_time = elapsed();
+  summary.frames_written = series->frames_written();
+  summary.status = status;
+  io::Json json = io::to_json(summary);
+  json.set("threads", omp_get_max_threads());
+  json.set("dt", integrator.dt());
+  json.set("stable_dt", integrator.stable_dt());
+  json.set("pvd", series->pvd_path().string());
+  if (code != kUnstable) {
+    json.set("energy", energy_json(integrator.measure_energy()));
+    json.set("min_J", integrator.min_J());
+    if (relax) {
+      json.set("converged", integrator.converged());
+      json.set("residual", integrator.residual());
+      json.set("kinetic_measure", integrator.kinetic_measure());
+    }
+    for (const auto& t : world->terms) t->report(*world, json);
+  } else {
+    json.set("diagnosis", diagnosis);
+    log << "error: " << diagnosis << "\n";
+    log << fmt::format("the last good frame is kept in {}\n", series->pvd_path().string());
+  }
+  io::write_json_atomically(options.out_dir / "summary.json", json);
+  if (code == kSuccess || code == kNotConverged)
+    log << fmt::format("{} after {} steps, t = {:.6g} s, {:.1f} s wall. ParaView: {}\n", status, world->step,
+                       world->time, summary.wall_time, series->pvd_path().string());
+  return code;
+}
+
+}  // namespace rkpm::sim

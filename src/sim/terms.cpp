@@ -1,0 +1,67 @@
+#include "rkpm/sim/terms.hpp"
+
+#include "rkpm/sim/build.hpp"
+
+#include <fmt/format.h>
+
+namespace rkpm::sim {
+
+void BodyForce::add_forces(World&) {
+  const auto n = static_cast<Index>(body_.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) body_.force[i] += body_.mass[i] * g_;
+}
+
+double BodyForce::power(const World&) const {
+  double p = 0.0;
+  const auto n = static_cast<Index>(body_.size());
+#pragma omp parallel for schedule(static) reduction(+ : p)
+  for (Index i = 0; i < n; ++i) p += body_.mass[i] * g_.dot(body_.v[i]);
+  return p;
+}
+
+SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double pressure)
+    : body_(body), pressure_(pressure), force_(body.size(), Vec3::Zero()) {
+  const auto& q = body.boundary;
+  for (std::size_t f = 0; f < q.point.size(); ++f)
+    if (surface_bit == 0u || (q.surface_mask[f] & surface_bit)) facets_.push_back(f);
+}
+
+void SurfacePressure::add_forces(World&) {
+  const auto& q = body_.boundary;
+  std::fill(force_.begin(), force_.end(), Vec3::Zero());
+  // Serial over facets: scattering to particles in a fixed order keeps the sum deterministic.
+  for (std::size_t f : facets_) {
+    const Mat3& F = body_.F[q.owner[f]];
+    const Vec3 current_area = F.determinant() * F.inverse().transpose() * q.area[f];
+    for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) force_[q.col[k]] -= pressure_ * q.psi[k] * current_area;
+  }
+  for (std::size_t i = 0; i < force_.size(); ++i) body_.force[i] += force_[i];
+}
+
+double SurfacePressure::power(const World&) const {
+  double p = 0.0;
+  for (std::size_t i = 0; i < force_.size(); ++i) p += force_[i].dot(body_.v[i]);
+  return p;
+}
+
+std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
+  const auto& p = spec.params;
+  const std::string type = spec.type();
+  auto body_named = [&](const std::string& key) -> Body& {
+    Body* b = world.find_body(p.text(key));
+    if (!b) throw SetupError(fmt::format("{}:{}: [term] {} = \"{}\": no such body", p.file(), p.line(key), key, p.text(key)));
+    return *b;
+  };
+  if (type == "body_force") return std::make_unique<BodyForce>(body_named("body"), p.vec3("acceleration"));
+  if (type == "surface_pressure") {
+    Body& b = body_named("body");
+    const std::string surface = p.text("surface");
+    return std::make_unique<SurfacePressure>(b, surface == "all" ? 0u : b.cloud.surface_bit(surface), p.real("pressure"));
+  }
+  throw SetupError(fmt::format("{}:{}: [term] type = \"{}\": this term is declared in the scene format but not yet "
+                               "available in this version of rkpm",
+                               p.file(), p.table_line(), type));
+}
+
+}  // namespace rkpm::sim
