@@ -41,20 +41,20 @@ struct RowAccumulator {
   std::vector<Index> touched;
   explicit RowAccumulator(std::size_t n) : value(n, Vec3::Zero()), used(n, 0) {}
   void add(Index i, const Vec3& v) {
-    if (!used[static_cast<std::size_t>(i)]) {
-      used[static_cast<std::size_t>(i)] = 1;
+    if (!used[i]) {
+      used[i] = 1;
       touched.push_back(i);
     }
-    value[static_cast<std::size_t>(i)] += v;
+    value[i] += v;
   }
   // Moves the row out (sorted by particle id) and resets the touched slots.
   void flush(double scale, std::vector<std::pair<Index, Vec3>>& row) {
     std::sort(touched.begin(), touched.end());
     row.clear();
     for (Index i : touched) {
-      row.emplace_back(i, value[static_cast<std::size_t>(i)] * scale);
-      value[static_cast<std::size_t>(i)].setZero();
-      used[static_cast<std::size_t>(i)] = 0;
+      row.emplace_back(i, value[i] * scale);
+      value[i].setZero();
+      used[i] = 0;
     }
     touched.clear();
   }
@@ -72,7 +72,7 @@ GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows,
   op.col.resize(static_cast<std::size_t>(op.row_offset.back()));
   op.grad.resize(op.col.size());
   for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::size_t k = static_cast<std::size_t>(op.row_offset[r]);
+    std::size_t k = op.row_offset[r];
     for (const auto& [i, b] : rows[r]) {
       op.col[k] = i;
       op.grad[k] = b;
@@ -81,32 +81,33 @@ GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows,
     std::vector<std::pair<Index, Vec3>>().swap(rows[r]);
   }
   op.weight = std::move(weight);
-  op.build_transpose(n_particles);
+  op.transpose.build(op.row_offset, op.col, n_particles);
   return op;
 }
 
 }  // namespace
 
-void GradientOperator::build_transpose(Index n_particles) {
-  t_offset.assign(static_cast<std::size_t>(n_particles) + 1, 0);
-  for (Index i : col) ++t_offset[static_cast<std::size_t>(i) + 1];
-  for (std::size_t i = 0; i < static_cast<std::size_t>(n_particles); ++i) t_offset[i + 1] += t_offset[i];
-  t_entry.resize(col.size());
-  t_row.resize(col.size());
-  std::vector<Index> fill(t_offset.begin(), t_offset.end() - 1);
-  for (Index r = 0; r < n_rows(); ++r)
-    for (Index k = row_offset[static_cast<std::size_t>(r)]; k < row_offset[static_cast<std::size_t>(r) + 1]; ++k) {
-      const auto slot = static_cast<std::size_t>(fill[static_cast<std::size_t>(col[static_cast<std::size_t>(k)])]++);
-      t_entry[slot] = k;
-      t_row[slot] = r;
+void CsrTranspose::build(const std::vector<Index>& row_offset, const std::vector<Index>& col, Index n_columns) {
+  offset.assign(n_columns + 1, 0);
+  for (Index i : col) ++offset[i + 1];
+  for (Index i = 0; i < n_columns; ++i) offset[i + 1] += offset[i];
+  entry.resize(col.size());
+  row.resize(col.size());
+  std::vector<Index> fill(offset.begin(), offset.end() - 1);
+  const auto n_rows = static_cast<Index>(row_offset.size()) - 1;
+  for (Index r = 0; r < n_rows; ++r)
+    for (Index k = row_offset[r]; k < row_offset[r + 1]; ++k) {
+      const Index slot = fill[col[k]]++;
+      entry[slot] = k;
+      row[slot] = r;
     }
 }
 
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
                                          Integration scheme) {
   const auto n = static_cast<Index>(cloud.size());
-  std::vector<std::vector<std::pair<Index, Vec3>>> rows(static_cast<std::size_t>(n));
-  std::vector<double> weight(static_cast<std::size_t>(n), 0.0);
+  std::vector<std::vector<std::pair<Index, Vec3>>> rows(n);
+  std::vector<double> weight(n, 0.0);
   FirstError error;
   const particles::DualCells cells(cloud);
 
@@ -114,19 +115,19 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
   {
     ShapeValues sv;
     std::vector<particles::DualFacet> facets;
-    RowAccumulator acc(static_cast<std::size_t>(n));
+    RowAccumulator acc(n);
 #pragma omp for schedule(dynamic, 64)
     for (Index L = 0; L < n; ++L) {
-      const Vec3& XL = cloud.X[static_cast<std::size_t>(L)];
+      const Vec3& XL = cloud.X[L];
       if (scheme == Integration::Direct) {
         if (!rk.evaluate(XL, sv, true)) {
           error.record(L, "");  // message filled below, outside the hot path
           continue;
         }
-        auto& row = rows[static_cast<std::size_t>(L)];
+        auto& row = rows[L];
         row.reserve(sv.ids.size());
         for (std::size_t k = 0; k < sv.ids.size(); ++k) row.emplace_back(sv.ids[k], sv.grad[k]);
-        weight[static_cast<std::size_t>(L)] = cloud.volume[static_cast<std::size_t>(L)];
+        weight[L] = cloud.volume[L];
         continue;
       }
       cells.facets(L, facets);
@@ -141,12 +142,12 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
         for (std::size_t k = 0; k < sv.ids.size(); ++k) acc.add(sv.ids[k], sv.psi[k] * f.area);
       }
       if (!ok || !(volume > 0.0)) {
-        acc.flush(0.0, rows[static_cast<std::size_t>(L)]);
+        acc.flush(0.0, rows[L]);
         error.record(L, "");
         continue;
       }
-      acc.flush(1.0 / volume, rows[static_cast<std::size_t>(L)]);
-      weight[static_cast<std::size_t>(L)] = volume;
+      acc.flush(1.0 / volume, rows[L]);
+      weight[L] = volume;
     }
   }
   try {
@@ -154,11 +155,11 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
   } catch (const ApproximationError&) {
     // Re-run the first failing particle serially to produce the full diagnosis.
     for (Index L = 0; L < n; ++L) {
-      if (!rows[static_cast<std::size_t>(L)].empty()) continue;
+      if (!rows[L].empty()) continue;
       ShapeValues sv;
       const std::string what = particle_label(cloud, L);
       if (scheme == Integration::Direct) {
-        rk.evaluate_or_throw(cloud.X[static_cast<std::size_t>(L)], sv, true, what);
+        rk.evaluate_or_throw(cloud.X[L], sv, true, what);
       } else {
         std::vector<particles::DualFacet> facets;
         cells.facets(L, facets);
@@ -228,33 +229,35 @@ NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, cons
     interp.col.insert(interp.col.end(), values[j].ids.begin(), values[j].ids.end());
     interp.psi.insert(interp.psi.end(), values[j].psi.begin(), values[j].psi.end());
   }
+  interp.transpose.build(interp.row_offset, interp.col, static_cast<Index>(n));
   return interp;
 }
 
 void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& F) {
   const Index n = op.n_rows();
-  F.resize(static_cast<std::size_t>(n));
+  F.resize(n);
 #pragma omp parallel for schedule(static)
   for (Index L = 0; L < n; ++L) {
     Mat3 f = Mat3::Zero();
-    for (Index k = op.row_offset[static_cast<std::size_t>(L)]; k < op.row_offset[static_cast<std::size_t>(L) + 1]; ++k)
-      f.noalias() += x[static_cast<std::size_t>(op.col[static_cast<std::size_t>(k)])] *
-                     op.grad[static_cast<std::size_t>(k)].transpose();
-    F[static_cast<std::size_t>(L)] = f;
+    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
+      f.noalias() += x[op.col[k]] *
+                     op.grad[k].transpose();
+    F[L] = f;
   }
 }
 
 void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f) {
-  const auto n = static_cast<Index>(op.t_offset.size()) - 1;
-  f.resize(static_cast<std::size_t>(n));
+  const auto& T = op.transpose;
+  const auto n = static_cast<Index>(T.offset.size()) - 1;
+  f.resize(n);
 #pragma omp parallel for schedule(static)
   for (Index I = 0; I < n; ++I) {
     Vec3 sum = Vec3::Zero();
-    for (Index t = op.t_offset[static_cast<std::size_t>(I)]; t < op.t_offset[static_cast<std::size_t>(I) + 1]; ++t) {
-      const auto row = static_cast<std::size_t>(op.t_row[static_cast<std::size_t>(t)]);
-      sum.noalias() += op.weight[row] * (P[row] * op.grad[static_cast<std::size_t>(op.t_entry[static_cast<std::size_t>(t)])]);
+    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) {
+      const Index row = T.row[t];
+      sum.noalias() += op.weight[row] * (P[row] * op.grad[T.entry[t]]);
     }
-    f[static_cast<std::size_t>(I)] = sum;
+    f[I] = sum;
   }
 }
 

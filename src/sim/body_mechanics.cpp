@@ -59,6 +59,8 @@ void compute_internal_forces(Body& body) {
   const auto np = static_cast<Index>(body.size());
 #pragma omp parallel for schedule(static)
   for (Index I = 0; I < np; ++I) body.force[I] = -body.force[I];
+  if (body.stabilization.active())
+    body.stabilization_energy = rk::add_stabilization_forces(body.interpolation, body.stabilization, body.d, body.force);
 }
 
 double strain_energy(const Body& body) {
@@ -76,7 +78,7 @@ double strain_energy(const Body& body) {
                               m.model.energy(body.F[L], director_at(*body.director, static_cast<std::size_t>(L)));
                  }},
              body.material);
-  return total;
+  return total + body.stabilization_energy;
 }
 
 void physical_displacement(const Body& body, std::vector<Vec3>& u) {

@@ -161,6 +161,14 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
   return dir;
 }
 
+// Small-strain shear modulus at each point: the stiffness scale of the stabilization.
+std::vector<double> shear_moduli(const Material& material, std::size_t n) {
+  if (const auto* lce = std::get_if<LCEMaterial>(&material)) return std::vector<double>(n, lce->model.mu);
+  std::vector<double> mu;
+  for (const auto& m : std::get<MooneyRivlinMaterial>(material).at_point) mu.push_back(m.shear_modulus());
+  return mu;
+}
+
 // Shortest mesh edge at each particle: the length scale of the stable time step.
 std::vector<double> shortest_edges(const particles::Cloud& cloud) {
   std::vector<double> h(cloud.size(), INFINITY);
@@ -237,6 +245,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   } catch (const std::invalid_argument& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.material), body->name, e.what()));
   }
+  body->stabilization =
+      rk::build_stabilization(cloud.volume, shear_moduli(body->material, n), spec.rk.real("stabilization"));
 
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");

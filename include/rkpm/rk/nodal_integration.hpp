@@ -31,21 +31,26 @@ namespace rkpm::rk {
 
 enum class Integration { SCNI, Direct };
 
-// A sparse matrix of 3-vectors in compressed rows, with its transpose as index lists.
+// The transpose of a compressed-row pattern as index lists: for column I, the entries
+// (by index into the row arrays) that reference it, ordered by row. Lets a "scatter"
+// A^T y be computed as a gather: no atomics, deterministic.
+struct CsrTranspose {
+  std::vector<Index> offset;  // n_columns + 1
+  std::vector<Index> entry;
+  std::vector<Index> row;
+  void build(const std::vector<Index>& row_offset, const std::vector<Index>& col, Index n_columns);
+};
+
+// A sparse matrix of 3-vectors in compressed rows, with its transpose.
 struct GradientOperator {
   std::vector<Index> row_offset;  // n_points + 1
   std::vector<Index> col;         // particle I of each entry
   std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m]
   std::vector<double> weight;     // V_L: integration weight of each row [m^3]
 
-  // Transpose: for particle I, the entries (by index into col/grad) of every row
-  // that references it, ordered by row.
-  std::vector<Index> t_offset;    // n_particles + 1
-  std::vector<Index> t_entry;
-  std::vector<Index> t_row;
+  CsrTranspose transpose;         // particle I -> the rows that reference it
 
   Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
-  void build_transpose(Index n_particles);
 };
 
 // Points on the body's surface with their outward area vectors and the shape
@@ -67,6 +72,7 @@ struct NodalInterpolation {
   std::vector<Index> row_offset;
   std::vector<Index> col;
   std::vector<double> psi;
+  CsrTranspose transpose;
 };
 
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,

@@ -13,6 +13,7 @@
 #include "rkpm/materials/mooney_rivlin.hpp"
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
+#include "rkpm/rk/stabilization.hpp"
 #include "rkpm/sim/essential_bc.hpp"
 
 #include <memory>
@@ -60,6 +61,8 @@ struct Body {
   rk::GradientOperator gradient;            // smoothed gradients b_I(X_L), weights V_L
   rk::BoundaryQuadrature boundary;          // surface quadrature consistent with the cells
   rk::NodalInterpolation interpolation;     // Psi_I(X_J)
+  rk::Stabilization stabilization;          // removes the spurious modes of nodal integration
+  double stabilization_energy = 0.0;        // at the last force evaluation [J]
   std::vector<double> mass;                 // lumped: rho0 V_I [kg]
   std::vector<double> spacing;              // shortest mesh edge at each particle [m]
 

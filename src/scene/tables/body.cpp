@@ -48,6 +48,10 @@ ParamTable rk_section() {
       ParamSpec::choice("integration", {"scni", "direct"}).defaults(std::string("scni"))
           .help("scni: stabilized conforming nodal integration over the cloud's dual cells "
                 "(passes the patch test). direct: nodal gradients (unstable; for comparison only)."),
+      ParamSpec::real("stabilization", "-").at_least(0).at_most(10).defaults(0.1)
+          .help("Coefficient alpha of the interpolation-residual stabilization, which removes the "
+                "spurious low-energy modes of nodal integration and leaves linear fields and rigid "
+                "motions untouched (see rkpm/rk/stabilization.hpp); 0 = off."),
   };
   return t;
 }
