@@ -24,11 +24,12 @@ Vec3 face_centroid(const std::vector<Vec3>& X, const std::int32_t* ids, int n) {
 
 // One-point (centroid) rule on triangle (p0, p1, p2); `sign` = -1 flips it for
 // the cell on the other side without changing a single bit of its geometry.
-void add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, double sign, bool on_boundary,
+// `face` is the boundary face a boundary piece lies on, -1 for interior facets.
+void add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, double sign, std::int32_t face,
                   std::vector<DualFacet>& out) {
   const Vec3 point = (p0 + p1 + p2) / 3.0;
   const Vec3 area = 0.5 * (p1 - p0).cross(p2 - p0);
-  out.push_back({point, sign * area, on_boundary});
+  out.push_back({point, sign * area, face >= 0, face});
 }
 
 // CSR from (key, value) pairs in value order; keys in [0, n_keys).
@@ -101,21 +102,22 @@ void DualCells::facets(std::int32_t particle, std::vector<DualFacet>& out) const
       const Vec3& cb = centroid_of(edge.face_b);
       // The topology orients the facet from edge.first to edge.second.
       const double sign = local == edge.first ? 1.0 : -1.0;
-      add_triangle(mid, ca, centre, sign, false, out);
-      add_triangle(mid, centre, cb, sign, false, out);
+      add_triangle(mid, ca, centre, sign, -1, out);
+      add_triangle(mid, centre, cb, sign, -1, out);
     }
   }
 
   for (int k = bface_offset_[particle]; k < bface_offset_[particle + 1]; ++k) {
-    const BoundaryFace& face = cloud_.boundary_faces[bfaces_[k]];
+    const std::int32_t face_index = bfaces_[k];
+    const BoundaryFace& face = cloud_.boundary_faces[face_index];
     const int m = face.n_nodes;
     const int at = static_cast<int>(std::find(face.nodes, face.nodes + m, particle) - face.nodes);
     const Vec3& a = X[particle];
     const Vec3 mid_next = 0.5 * (a + X[face.nodes[(at + 1) % m]]);
     const Vec3 mid_prev = 0.5 * (X[face.nodes[(at + m - 1) % m]] + a);
     const Vec3 centre = face_centroid(X, face.nodes, m);
-    add_triangle(a, mid_next, centre, 1.0, true, out);
-    add_triangle(a, centre, mid_prev, 1.0, true, out);
+    add_triangle(a, mid_next, centre, 1.0, face_index, out);
+    add_triangle(a, centre, mid_prev, 1.0, face_index, out);
   }
 }
 

@@ -97,8 +97,8 @@ Cloud import_vtu(const std::string& path) {
                    "); expected VTK node order with positive volume");
   }
 
-  // The file carries no surface names: the whole surface is "boundary".
-  cloud.surface_names = {"boundary"};
+  // The file carries no surface names: the whole surface is "surface".
+  cloud.surface_names = {"surface"};
   finalize_cloud(cloud);
   for (const std::int32_t p : cloud.boundary_particles) cloud.surface_mask[p] = 1;
   return cloud;

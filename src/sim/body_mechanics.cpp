@@ -44,7 +44,12 @@ void compute_internal_forces(Body& body) {
 #pragma omp parallel for schedule(static)
                    for (Index L = 0; L < n; ++L) {
                      const auto p = director_at(dir, static_cast<std::size_t>(L));
-                     body.P[L] = m.model.first_piola(body.F[L], p);
+                     if (m.activity.empty()) {
+                       body.P[L] = m.model.first_piola(body.F[L], p);
+                     } else {
+                       body.P[L] = m.model.first_piola_passive(body.F[L], p) +
+                                   m.activity[L] * m.model.first_piola_active(body.F[L], p.h);
+                     }
                      if (dir.frank) dir.frank_flux[L] = m.model.frank_flux(body.F[L], p);
                    }
                    if (dir.frank) {

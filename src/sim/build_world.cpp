@@ -269,6 +269,15 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   update_positions(*body);
 
   if (spec.director) body->director = make_director(spec, *body);
+  if (auto* lce = std::get_if<LCEMaterial>(&body->material); lce && spec.material.choice("zeta_profile") == "axial") {
+    // Activity field zeta (h0 . a)^2: active where the reference director is along the axis.
+    const Vec3 axis = spec.material.vec3("zeta_axis");
+    if (!(axis.norm() > 0.0))
+      throw SetupError(fmt::format("{}:{}: [body.material] zeta_axis = [0, 0, 0]: expected a non-zero vector",
+                                   spec.material.file(), spec.material.line("zeta_axis")));
+    lce->activity.resize(n);
+    for (std::size_t i = 0; i < n; ++i) lce->activity[i] = std::pow(body->director->h0[i].dot(axis.normalized()), 2);
+  }
   try {
     body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
   } catch (const std::runtime_error& e) {

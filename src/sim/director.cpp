@@ -3,8 +3,13 @@
 
 namespace rkpm::sim {
 
+namespace {
+double activity_factor(const LCEMaterial& m, Index L) { return m.activity.empty() ? 1.0 : m.activity[L]; }
+}  // namespace
+
 double advance_director(Body& body, double dt) {
-  const auto& model = std::get<LCEMaterial>(body.material).model;
+  const auto& material = std::get<LCEMaterial>(body.material);
+  const auto& model = material.model;
   DirectorField& dir = *body.director;
   const auto n = static_cast<Index>(body.size());
 
@@ -15,7 +20,8 @@ double advance_director(Body& body, double dt) {
   if (model.zeta != 0.0) {
 #pragma omp parallel for schedule(static) reduction(+ : active)
     for (Index L = 0; L < n; ++L)
-      active += body.gradient.weight[L] * (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
+      active += body.gradient.weight[L] * activity_factor(material, L) *
+                (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
   }
 
   if (dir.evolve) {

@@ -6,6 +6,7 @@
 #include "rkpm/io/run_summary.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/checkpoint.hpp"
+#include "rkpm/sim/history.hpp"
 #include "rkpm/sim/output.hpp"
 
 #include <fmt/format.h>
@@ -60,6 +61,15 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   if (options.max_steps_override > 0) max_steps = options.max_steps_override;
   const std::uint64_t digest = file_digest(scene.file);
 
+  const Body* shape_body = nullptr;
+  if (const std::string name = scene.output.text("shape_report"); !name.empty()) {
+    shape_body = world->find_body(name);
+    if (!shape_body || shape_body->cloud.surface_bit("outer") == 0u) {
+      log << fmt::format("error: {}:{}: [output] shape_report = \"{}\": expected the name of a shell body\n",
+                         scene.output.file(), scene.output.line("shape_report"), name);
+      return kBadInput;
+    }
+  }
   std::filesystem::create_directories(options.out_dir);
   const auto checkpoint_path = options.out_dir / "checkpoint.bin";
   RunClock clock;
@@ -80,9 +90,12 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     log << fmt::format("warning: [integrator] dt = {:.3g} s exceeds the stable step {:.3g} s; using {:.3g} s\n",
                        settings.dt, integrator.stable_dt(), integrator.dt());
 
+  History history(options.out_dir / "history.csv", *world, shape_body, !options.restart.empty());
+
   std::vector<Vec3> positions;
   auto write_frame = [&] {
     series->write(world->time, make_frame(*world, cells, positions));
+    history.record(*world, integrator);
     ++clock.frames;
   };
   if (options.restart.empty()) {
@@ -151,6 +164,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       json.set("kinetic_measure", integrator.kinetic_measure());
     }
     for (const auto& t : world->terms) t->report(*world, json);
+    if (shape_body) write_shape(final_shape(*shape_body), options.out_dir / "shape_profile.csv", json);
   } else {
     json.set("diagnosis", diagnosis);
     log << "error: " << diagnosis << "\n";

@@ -1,6 +1,7 @@
 #include "rkpm/sim/terms.hpp"
 
 #include "rkpm/sim/build.hpp"
+#include "rkpm/sim/volume_constraint.hpp"
 
 #include <fmt/format.h>
 
@@ -58,6 +59,12 @@ std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
     Body& b = body_named("body");
     const std::string surface = p.text("surface");
     return std::make_unique<SurfacePressure>(b, surface == "all" ? 0u : b.cloud.surface_bit(surface), p.real("pressure"));
+  }
+  if (type == "volume_constraint") {
+    Body& b = body_named("body");
+    const std::string surface = p.text("surface");
+    return std::make_unique<VolumeConstraint>(b, surface == "all" ? 0u : b.cloud.surface_bit(surface), p.real("bulk"),
+                                              p.real("target"));
   }
   throw SetupError(fmt::format("{}:{}: [term] type = \"{}\": this term is declared in the scene format but not yet "
                                "available in this version of rkpm",

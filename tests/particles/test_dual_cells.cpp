@@ -3,6 +3,7 @@
 
 #include "rkpm/particles/generators.hpp"
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -72,6 +73,82 @@ TEST(DualCells, InteriorFacetNormalsPointAwayFromTheParticle) {
       }
     }
   }
+}
+
+// Every boundary piece names the boundary face it lies on: a face of the owning
+// particle, and the pieces of one face (from all its corners' cells) tile it, so
+// their area vectors sum to the face's, (1/2) sum_k x_k x x_{k+1} (a property of
+// the boundary loop alone). Interior facets name no face. Returns the worst
+// relative mismatch of the sums.
+double expect_boundary_pieces_tile_their_faces(const Cloud& cloud) {
+  const DualCells cells(cloud);
+  std::vector<DualFacet> facets;
+  std::vector<Vec3> piece_sum(cloud.boundary_faces.size(), Vec3::Zero());
+  std::size_t foreign = 0, bad_index = 0;
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(cloud.size()); ++i) {
+    cells.facets(i, facets);
+    for (const DualFacet& f : facets) {
+      if (!f.on_boundary) {
+        bad_index += f.face == -1 ? 0 : 1;
+        continue;
+      }
+      if (f.face < 0 || f.face >= static_cast<std::int32_t>(cloud.boundary_faces.size())) {
+        ++bad_index;
+        continue;
+      }
+      const BoundaryFace& face = cloud.boundary_faces[f.face];
+      foreign += std::count(face.nodes, face.nodes + face.n_nodes, i) == 1 ? 0 : 1;
+      piece_sum[f.face] += f.area;
+    }
+  }
+  EXPECT_EQ(bad_index, 0u);
+  EXPECT_EQ(foreign, 0u);
+  double worst = 0.0;
+  for (std::size_t k = 0; k < cloud.boundary_faces.size(); ++k) {
+    const BoundaryFace& face = cloud.boundary_faces[k];
+    Vec3 exact = Vec3::Zero();
+    for (int a = 0; a < face.n_nodes; ++a) exact += 0.5 * cloud.X[face.nodes[a]].cross(cloud.X[face.nodes[(a + 1) % face.n_nodes]]);
+    worst = std::max(worst, (piece_sum[k] - exact).norm() / exact.norm());
+  }
+  EXPECT_LT(worst, 1e-12);
+  return worst;
+}
+
+TEST(DualCells, BoundaryPiecesNameTheirFace) {
+  report("block: max |sum of pieces - face area| / |face area|",
+         expect_boundary_pieces_tile_their_faces(make_block(jittered_block())));
+  report("tets: max |sum of pieces - face area| / |face area|",
+         expect_boundary_pieces_tile_their_faces(testing::tet_block(jittered_block())));
+  ShellSpec shell;
+  shell.face_cells = 6;
+  shell.layers = 3;
+  report("shell: max |sum of pieces - face area| / |face area|",
+         expect_boundary_pieces_tile_their_faces(make_shell(shell)));
+}
+
+// What the face is for: a particle on a block's edge or corner lies on two or
+// three named surfaces, and each of its boundary pieces belongs to exactly one of
+// them, the one whose outward axis its area vector points along.
+TEST(DualCells, BoundaryPieceFaceSelectsTheNamedSurface) {
+  const Cloud cloud = make_block(jittered_block());
+  const DualCells cells(cloud);
+  const char* names[3][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}, {"zmin", "zmax"}};
+  std::vector<DualFacet> facets;
+  std::size_t checked = 0, wrong = 0;
+  for (std::int32_t i = 0; i < static_cast<std::int32_t>(cloud.size()); ++i) {
+    cells.facets(i, facets);
+    for (const DualFacet& f : facets) {
+      if (!f.on_boundary) continue;
+      int axis = 0;
+      f.area.cwiseAbs().maxCoeff(&axis);
+      const std::string surface = names[axis][f.area[axis] > 0 ? 1 : 0];
+      const BoundaryFace& face = cloud.boundary_faces[f.face];
+      for (int a = 0; a < face.n_nodes; ++a) wrong += cloud.on_surface(face.nodes[a], surface) ? 0 : 1;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2u * 4u * 2u * (5 * 4 + 4 * 3 + 5 * 3));
+  EXPECT_EQ(wrong, 0u);
 }
 
 TEST(DualCells, TetMeshVolumesAreaAndClosure) {

@@ -69,7 +69,15 @@ void expect_same_cloud(const Cloud& original, const Cloud& imported) {
   testing::report("vtu round trip max nodal volume relative difference", worst);
   EXPECT_LT(worst, 1e-14);
   EXPECT_EQ(imported.boundary_particles, original.boundary_particles);
-  for (const std::int32_t p : imported.boundary_particles) EXPECT_TRUE(imported.on_surface(p, "boundary"));
+  // The whole surface is one named surface, "surface", and nothing else is on it.
+  EXPECT_EQ(imported.surface_names, std::vector<std::string>{"surface"});
+  std::size_t on_surface = 0;
+  for (std::int32_t p = 0; p < static_cast<std::int32_t>(imported.size()); ++p) {
+    on_surface += imported.on_surface(p, "surface") ? 1 : 0;
+  }
+  EXPECT_EQ(on_surface, imported.boundary_particles.size());
+  for (const std::int32_t p : imported.boundary_particles) EXPECT_TRUE(imported.on_surface(p, "surface"));
+  EXPECT_FALSE(imported.on_surface(imported.boundary_particles.front(), "boundary"));
 }
 
 TEST(ImportVtu, HexRoundTripKeepsNodalVolumes) {

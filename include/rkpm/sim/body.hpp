@@ -32,6 +32,8 @@ struct MooneyRivlinMaterial {
 // Active liquid-crystal elastomer (Eq. 1-4); its director lives in Body::director.
 struct LCEMaterial {
   materials::LiquidCrystalElastomer model;
+  // Activity of each point relative to model.zeta (the activity field); empty = uniform.
+  std::vector<double> activity;
 };
 
 using Material = std::variant<MooneyRivlinMaterial, LCEMaterial>;

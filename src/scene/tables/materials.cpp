@@ -67,7 +67,14 @@ ParamTable lce() {
       ParamSpec::real("mobility", "1/(Pa s)").at_least(0).defaults(0.0)
           .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only."),
       ParamSpec::real("zeta", "Pa").defaults(0.0)
-          .help("Activity zeta of the active stress -zeta h x h (Eq. 1); > 0 contractile."),
+          .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
+                "along h (contractile), zeta > 0 elongates it (extensile)."),
+      ParamSpec::choice("zeta_profile", {"uniform", "axial"}).defaults(std::string("uniform"))
+          .help("Spatial profile of the activity: uniform = zeta everywhere; axial = zeta (h0 . a)^2 with a = "
+                "zeta_axis, i.e. full activity where the reference director is along the axis (a cell's flat "
+                "faces) and none where it is perpendicular (its rim)."),
+      ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
+          .help("Axis a of the axial activity profile (normalised; must be non-zero)."),
   };
   return t;
 }

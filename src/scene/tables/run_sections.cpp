@@ -73,6 +73,10 @@ ParamTable output_section() {
                 "points: particles only (vertex cells)."),
       ParamSpec::integer("checkpoint_every").at_least(0).defaults(std::int64_t{0})
           .help("Steps between checkpoints from which a run can be restarted; 0 = never."),
+      ParamSpec::text("shape_report").defaults(std::string(""))
+          .help("Name of a shell body whose outer-surface shape is measured against the Evans-Fung red-blood-cell "
+                "profile at every frame (history.csv) and at the end (summary.json, shape_profile.csv); "
+                "\"\" = none."),
   };
   return t;
 }

@@ -6,7 +6,8 @@
 //       [midpoint(a,b), centroid(face 1 of the edge), centroid(element), centroid(face 2)],
 //     shared with the cell of b, where it appears with the opposite orientation;
 //   * boundary pieces, one quadrilateral per boundary face around a:
-//       [a, midpoint(a,next), centroid(face), midpoint(prev,a)].
+//       [a, midpoint(a,next), centroid(face), midpoint(prev,a)],
+//     tagged with the boundary face they lie on.
 // Each quadrilateral is split into two triangles with fixed diagonals, so every facet
 // is planar: a one-point (centroid) rule integrates linear functions over it exactly,
 // and both cells sharing a facet evaluate the same points bit for bit. The cell
@@ -24,6 +25,10 @@ struct DualFacet {
   Vec3 point;        // triangle centroid: the quadrature point [m]
   Vec3 area;         // outward area vector (unit normal times area) [m^2]
   bool on_boundary;  // true for pieces of the body's surface
+  // Boundary pieces: index into Cloud::boundary_faces of the face the piece lies on,
+  // which tells the named surface of a particle on an edge between two surfaces
+  // (e.g. a block's corner belongs to three). -1 for interior facets.
+  std::int32_t face = -1;
 };
 
 class DualCells {

@@ -1,0 +1,35 @@
+// history.csv: one row per frame with the quantities a user follows over a run —
+// energies and their balance, the relaxation residual, enclosed volumes and, for
+// the body named by [output] shape_report, its volume, area and reduced volume.
+#pragma once
+
+#include "rkpm/sim/integrator.hpp"
+#include "rkpm/sim/shape_report.hpp"
+#include "rkpm/sim/world.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace rkpm::io {
+class Json;
+}
+
+namespace rkpm::sim {
+
+class History {
+ public:
+  // `shape_body` may be null. Appends to an existing file when resuming.
+  History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume);
+  void record(const World& world, Integrator& integrator);
+
+ private:
+  std::ofstream out_;
+  const Body* shape_body_;
+};
+
+// The final shape of `body`'s outer surface: summary entries and shape_profile.csv.
+ShapeReport final_shape(const Body& body);
+void write_shape(const ShapeReport& shape, const std::filesystem::path& profile_csv, io::Json& summary);
+
+}  // namespace rkpm::sim

@@ -1,0 +1,72 @@
+#include "rkpm/sim/history.hpp"
+
+#include "rkpm/io/json.hpp"
+#include "rkpm/sim/volume_constraint.hpp"
+
+#include <fmt/format.h>
+
+namespace rkpm::sim {
+
+namespace {
+std::vector<Vec3> physical_positions(const Body& body) {
+  std::vector<Vec3> u;
+  physical_displacement(body, u);
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] += body.cloud.X[i];
+  return u;
+}
+}  // namespace
+
+History::History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume)
+    : out_(path, resume ? std::ios::app : std::ios::trunc), shape_body_(shape_body) {
+  if (!out_) throw std::runtime_error("cannot write " + path.string());
+  if (resume) return;
+  out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,dissipated,energy_error,residual,min_J";
+  for (const auto& t : world.terms)
+    if (dynamic_cast<const VolumeConstraint*>(t.get())) out_ << ",enclosed_volume_ratio,enclosed_pressure";
+  if (shape_body_) out_ << ",volume,area,reduced_volume";
+  out_ << "\n";
+}
+
+void History::record(const World& world, Integrator& integrator) {
+  const auto& e = integrator.measure_energy();
+  out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}", world.step,
+                      world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
+                      e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
+  for (const auto& t : world.terms)
+    if (const auto* vc = dynamic_cast<const VolumeConstraint*>(t.get()))
+      out_ << fmt::format(",{:.10g},{:.6g}", vc->volume() / vc->initial_volume(), vc->pressure());
+  if (shape_body_) {
+    double volume = 0.0, area = 0.0;
+    surface_volume_area(shape_body_->cloud, physical_positions(*shape_body_), "outer", volume, area);
+    const double reduced = volume / (4.0 * M_PI / 3.0 * std::pow(area / (4.0 * M_PI), 1.5));
+    out_ << fmt::format(",{:.10g},{:.10g},{:.6g}", volume, area, reduced);
+  }
+  out_ << "\n";
+  out_.flush();
+}
+
+ShapeReport final_shape(const Body& body) { return measure_shape(body.cloud, physical_positions(body), "outer"); }
+
+void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv, io::Json& summary) {
+  io::Json j = io::Json::object();
+  j.set("diameter", s.diameter);
+  j.set("h_min", s.h_min);
+  j.set("h_max", s.h_max);
+  j.set("h_min_over_h_max", s.h_min / s.h_max);
+  j.set("r_hmax_over_R", s.r_hmax_over_R);
+  j.set("updown_asymmetry", s.updown_asymmetry);
+  j.set("axial_asymmetry", s.axial_asymmetry);
+  j.set("volume", s.volume);
+  j.set("area", s.area);
+  j.set("reduced_volume", s.reduced_volume);
+  j.set("rms_vs_evans_fung_over_D", s.rms_vs_evans_fung);
+  j.set("biconcave", s.biconcave);
+  summary.set("shape", j);
+  std::ofstream out(profile_csv);
+  out << "r,thickness,top,bottom,evans_fung\n";
+  for (std::size_t k = 0; k < s.r.size(); ++k)
+    out << fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}\n", s.r[k], s.thickness[k], s.top[k], s.bottom[k],
+                       s.evans_fung[k]);
+}
+
+}  // namespace rkpm::sim

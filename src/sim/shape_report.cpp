@@ -1,0 +1,145 @@
+#include "rkpm/sim/shape_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kSectors = 8;
+
+bool face_on(const particles::Cloud& cloud, const particles::BoundaryFace& face, std::uint32_t bit) {
+  for (int k = 0; k < face.n_nodes; ++k)
+    if (!(cloud.surface_mask[face.nodes[k]] & bit)) return false;
+  return true;
+}
+}  // namespace
+
+double evans_fung_thickness(double r, double diameter) {
+  // Evans & Fung (1972): R0 = 3.91 um; lengths scale with D / 7.82 um.
+  const double x = std::min(1.0, 2.0 * r / diameter);
+  const double um = diameter / 7.82;
+  return std::sqrt(1.0 - x * x) * (0.81 + 7.83 * x * x - 4.39 * x * x * x * x) * um;
+}
+
+void surface_volume_area(const particles::Cloud& cloud, const std::vector<Vec3>& positions,
+                         const std::string& surface, double& volume, double& area) {
+  const std::uint32_t bit = cloud.surface_bit(surface);
+  if (bit == 0u) throw std::invalid_argument("shape report: the cloud has no surface named '" + surface + "'");
+  volume = 0.0;
+  area = 0.0;
+  for (const auto& face : cloud.boundary_faces) {
+    if (!face_on(cloud, face, bit)) continue;
+    // Fan triangulation from the first node; outward orientation as stored.
+    for (int k = 1; k + 1 < face.n_nodes; ++k) {
+      const Vec3& a = positions[face.nodes[0]];
+      const Vec3& b = positions[face.nodes[k]];
+      const Vec3& c = positions[face.nodes[k + 1]];
+      volume += a.dot(b.cross(c)) / 6.0;
+      area += 0.5 * (b - a).cross(c - a).norm();
+    }
+  }
+}
+
+ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>& positions,
+                          const std::string& surface, int bins) {
+  const std::uint32_t bit = cloud.surface_bit(surface);
+  if (bit == 0u) throw std::invalid_argument("shape report: the cloud has no surface named '" + surface + "'");
+  ShapeReport s;
+  surface_volume_area(cloud, positions, surface, s.volume, s.area);
+  s.reduced_volume = s.volume / (4.0 * kPi / 3.0 * std::pow(s.area / (4.0 * kPi), 1.5));
+
+  // Current outward normals of the surface particles (area-weighted face normals).
+  std::vector<Vec3> normal(cloud.size(), Vec3::Zero());
+  std::vector<char> on(cloud.size(), 0);
+  for (const auto& face : cloud.boundary_faces) {
+    if (!face_on(cloud, face, bit)) continue;
+    const Vec3& p0 = positions[face.nodes[0]];
+    const Vec3 a = face.n_nodes == 3
+                       ? Vec3(0.5 * (positions[face.nodes[1]] - p0).cross(positions[face.nodes[2]] - p0))
+                       : Vec3(0.5 * (positions[face.nodes[2]] - p0).cross(positions[face.nodes[3]] - positions[face.nodes[1]]));
+    for (int k = 0; k < face.n_nodes; ++k) {
+      normal[face.nodes[k]] += a;
+      on[face.nodes[k]] = 1;
+    }
+  }
+  Vec3 centre = Vec3::Zero();
+  int count = 0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (on[i]) {
+      centre += positions[i];
+      ++count;
+    }
+  centre /= count;
+  double R = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (on[i]) R = std::max(R, std::hypot(positions[i].x() - centre.x(), positions[i].y() - centre.y()));
+  s.diameter = 2.0 * R;
+
+  // Per bin and sector: sums of z for the top (n_z > 0) and bottom sheets.
+  const int nb = bins;
+  std::vector<double> top_sum(nb * kSectors, 0.0), bot_sum(nb * kSectors, 0.0);
+  std::vector<int> top_n(nb * kSectors, 0), bot_n(nb * kSectors, 0);
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!on[i]) continue;
+    const Vec3 p = positions[i] - centre;
+    const double r = std::hypot(p.x(), p.y());
+    const int b = std::min(nb - 1, static_cast<int>(r / R * nb));
+    const double angle = std::atan2(p.y(), p.x()) + kPi;
+    const int sector = std::min(kSectors - 1, static_cast<int>(angle / (2.0 * kPi) * kSectors));
+    const int k = b * kSectors + sector;
+    if (normal[i].z() > 0.0) {
+      top_sum[k] += p.z();
+      ++top_n[k];
+    } else {
+      bot_sum[k] += p.z();
+      ++bot_n[k];
+    }
+  }
+  double rms = 0.0;
+  int rms_n = 0;
+  for (int b = 0; b < nb; ++b) {
+    double ts = 0, bs = 0;
+    int tn = 0, bn = 0;
+    for (int k = b * kSectors; k < (b + 1) * kSectors; ++k) {
+      ts += top_sum[k];
+      tn += top_n[k];
+      bs += bot_sum[k];
+      bn += bot_n[k];
+    }
+    if (tn == 0 || bn == 0) continue;
+    const double r = (b + 0.5) * R / nb;
+    s.r.push_back(r);
+    s.top.push_back(ts / tn);
+    s.bottom.push_back(bs / bn);
+    s.thickness.push_back(ts / tn - bs / bn);
+    s.evans_fung.push_back(evans_fung_thickness(r, s.diameter));
+    rms += std::pow(s.thickness.back() - s.evans_fung.back(), 2);
+    ++rms_n;
+  }
+  if (s.thickness.empty()) throw std::runtime_error("shape report: no part of the surface has both a top and a bottom");
+  s.rms_vs_evans_fung = std::sqrt(rms / rms_n) / s.diameter;
+  s.h_min = s.thickness.front();
+  const auto it = std::max_element(s.thickness.begin(), s.thickness.end());
+  s.h_max = *it;
+  s.r_hmax_over_R = s.r[static_cast<std::size_t>(it - s.thickness.begin())] / R;
+  for (std::size_t j = 0; j < s.r.size(); ++j)
+    s.updown_asymmetry = std::max(s.updown_asymmetry, std::abs(s.top[j] + s.bottom[j]) / s.h_max);
+  // Axial asymmetry: each sector's thickness against the mean, over the bins all sectors see.
+  for (int b = 0; b < nb; ++b) {
+    const double r = (b + 0.5) * R / nb;
+    const auto j = std::find(s.r.begin(), s.r.end(), r);
+    if (j == s.r.end()) continue;
+    const double mean = s.thickness[static_cast<std::size_t>(j - s.r.begin())];
+    for (int k = b * kSectors; k < (b + 1) * kSectors; ++k) {
+      if (top_n[k] == 0 || bot_n[k] == 0) continue;
+      s.axial_asymmetry = std::max(s.axial_asymmetry, std::abs(top_sum[k] / top_n[k] - bot_sum[k] / bot_n[k] - mean) / s.h_max);
+    }
+  }
+  s.biconcave = s.h_min / s.h_max <= 0.5 && s.r_hmax_over_R >= 0.55 && s.r_hmax_over_R <= 0.85;
+  return s;
+}
+
+}  // namespace rkpm::sim
