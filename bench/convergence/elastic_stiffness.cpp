@@ -20,10 +20,10 @@ void ElasticStiffness::strains(const Field& d, std::vector<Mat3>& eps) const {
 }
 
 void ElasticStiffness::apply(const Field& d, Field& Kd) {
-  strains(d, stress_);
+  rk::deformation_gradients(gradient_, d, stress_);  // grad u, overwritten by the stress below
   const auto n_rows = static_cast<Index>(stress_.size());
 #pragma omp parallel for schedule(static)
-  for (Index L = 0; L < n_rows; ++L) stress_[L] = material_.stress(stress_[L]);
+  for (Index L = 0; L < n_rows; ++L) stress_[L] = material_.stress(0.5 * (stress_[L] + stress_[L].transpose()));
   rk::internal_forces(gradient_, stress_, Kd);  // sum_L V_L sigma_L b_I(X_L)
   if (!stabilization_.active()) return;
   // add_stabilization_forces adds the restoring force -K_stab d.

@@ -1,6 +1,7 @@
 // Nodal vector fields (one Vec3 per particle) and the few BLAS-1 operations the
-// Krylov solver needs. Reductions run in a fixed order per thread count, so a run
-// is reproducible on the same machine.
+// Krylov solver needs. Serial on purpose: they cost microseconds next to a
+// stiffness product, while every OpenMP region adds a barrier, which on a loaded
+// machine can cost a scheduler time slice. Serial sums are also reproducible.
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -14,7 +15,6 @@ using Field = std::vector<Vec3>;
 inline double dot(const Field& u, const Field& v) {
   const auto n = static_cast<Index>(u.size());
   double sum = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : sum)
   for (Index i = 0; i < n; ++i) sum += u[i].dot(v[i]);
   return sum;
 }
@@ -22,7 +22,6 @@ inline double dot(const Field& u, const Field& v) {
 // y += s x
 inline void axpy(double s, const Field& x, Field& y) {
   const auto n = static_cast<Index>(x.size());
-#pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) y[i] += s * x[i];
 }
 

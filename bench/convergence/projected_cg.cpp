@@ -12,7 +12,6 @@ SolverReport solve_projected_cg(ElasticStiffness& K, const RigidModes& rigid, Fi
   std::vector<Mat3> inverse_block = K.diagonal_blocks();
   for (auto& B : inverse_block) B = B.inverse().eval();
   auto precondition = [&](const Field& r, Field& z) {
-#pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) z[i] = inverse_block[i] * r[i];
     rigid.remove_from(z);
   };
@@ -46,7 +45,6 @@ SolverReport solve_projected_cg(ElasticStiffness& K, const RigidModes& rigid, Fi
     const double rz_next = dot(r, z);
     const double beta = rz_next / rz;
     rz = rz_next;
-#pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
   }
   // Report the true residual, not the recursively updated one, which can drift.

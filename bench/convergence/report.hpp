@@ -14,9 +14,9 @@ struct RunRecord {
   std::string failure;  // empty when the run produced a solution
 };
 
-// Least-squares slope of log(error) against log(h) over the runs of one scheme
-// that produced a solution; NaN with fewer than two.
-double fitted_rate(const std::vector<RunRecord>& runs, Scheme scheme, double CaseResult::*error);
+// Least-squares slope of log(error) against log(h) over the finest `count` runs
+// (all when count <= 0) of one scheme that produced a solution; NaN with fewer than two.
+double fitted_rate(const std::vector<RunRecord>& runs, Scheme scheme, double CaseResult::*error, int count = 0);
 
 void write_csv(const std::string& path, const std::vector<RunRecord>& runs);
 void write_markdown(const std::string& path, const std::vector<RunRecord>& runs, const CaseSettings& settings);

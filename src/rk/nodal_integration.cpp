@@ -60,6 +60,16 @@ struct RowAccumulator {
   }
 };
 
+// The named surfaces a boundary face lies on: those all its nodes share (a particle on a
+// block edge is on two faces, a face on one).
+std::uint32_t face_surfaces(const particles::Cloud& cloud, std::int32_t face) {
+  if (cloud.surface_mask.empty() || face < 0) return 0u;
+  const auto& bf = cloud.boundary_faces[face];
+  std::uint32_t mask = ~0u;
+  for (int k = 0; k < bf.n_nodes; ++k) mask &= cloud.surface_mask[bf.nodes[k]];
+  return mask;
+}
+
 std::string particle_label(const particles::Cloud& cloud, Index i) {
   return fmt::format("cloud '{}', particle {}", cloud.name, i);
 }
@@ -184,7 +194,7 @@ BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, cons
         q.point.push_back(f.point);
         q.area.push_back(f.area);
         q.owner.push_back(L);
-        q.surface_mask.push_back(cloud.surface_mask.empty() ? 0u : cloud.surface_mask[L]);
+        q.surface_mask.push_back(face_surfaces(cloud, f.face));
       }
   }
   const std::size_t m = q.point.size();

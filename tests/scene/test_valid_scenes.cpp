@@ -157,7 +157,7 @@ TEST(CloudRecipe, BlockSphereAndShellSpecsCarryTheSceneValues) {
 
   const auto sphere = std::get<particles::SphereSpec>(cloud_recipe(parse_scene(kBase + kLceBody, "ok.toml").bodies[1]));
   EXPECT_EQ(sphere.radius, 5e-6);
-  EXPECT_EQ(sphere.cells, 12);
+  EXPECT_EQ(sphere.cells, 16);
   EXPECT_EQ(sphere.center, Vec3::Zero());
 
   const std::string shell = replaced(kBase, "generator = \"block\"\nsize = [1, 1, 1]\ncells = [2, 2, 2]",

@@ -38,7 +38,7 @@ ParamTable sphere() {
   t.specs = {
       ParamSpec::vec3("center", "m").defaults(Vec3::Zero()).help("Centre of the ball."),
       ParamSpec::real("radius", "m").greater_than(0).mark_required().help("Radius of the ball."),
-      ParamSpec::integer("cells").at_least(2).defaults(std::int64_t{12}).help("Hexahedra across a diameter."),
+      ParamSpec::integer("cells").at_least(2).defaults(std::int64_t{16}).help("Hexahedra across a diameter."),
   };
   t.surfaces = {"surface"};
   return t;

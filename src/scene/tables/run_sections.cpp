@@ -47,11 +47,11 @@ ParamTable integrator_section() {
       ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})
           .help("Hard limit on the number of steps; reaching it ends the run with an error."),
       ParamSpec::real("relax_force_tol", "-").greater_than(0).defaults(1e-6)
-          .help("relax mode: converged when the residual force norm falls below this fraction of "
-                "the internal-force scale."),
+          .help("relax mode: converged when the largest residual force on a particle, expressed as a "
+                "stress (|f_I| / V_I^(2/3)), falls below this fraction of the body's shear modulus."),
       ParamSpec::real("relax_velocity_tol", "-").greater_than(0).defaults(1e-8)
-          .help("relax mode: converged when the kinetic energy falls below this fraction of the "
-                "stored elastic energy."),
+          .help("relax mode: converged when, in addition, the kinetic energy falls below this fraction "
+                "of mu V summed over the bodies (shear modulus times volume)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
   };
