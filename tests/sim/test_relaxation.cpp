@@ -14,6 +14,7 @@
 // (the rows of Psi_I(X_J)) cannot represent the boundary-quadrature traction
 // sum_f Psi_I(X_f) A_f, an O(h) boundary-layer error (3e-3 on a 5x3x3 block).
 #include "sim_fixtures.hpp"
+#include "rkpm/sim/terms.hpp"
 
 #include <gtest/gtest.h>
 
@@ -119,6 +120,20 @@ Relaxed relax(const std::string& loading, const std::string& mode, double dampin
               bool free_translation, std::int64_t max_steps = 200000) {
   auto sw = testing::build_from_text(
       testing::with(testing::with(kLoadedBlock, "mode", mode), "damping", std::to_string(damping)) + loading);
+  if (getenv("PATCH")) {
+    Body& b = *sw.world->bodies.front();
+    sw.world->terms.clear();
+    for (int side = 0; side < 2; ++side) {
+    const auto bit = b.cloud.surface_bit(side ? "xmax" : "xmin");
+    int kept = 0, dropped = 0;
+    for (std::size_t f = 0; f < b.boundary.point.size(); ++f) {
+      if (!(b.boundary.surface_mask[f] & bit)) continue;
+      if (!(std::abs(b.boundary.area[f].x()) > 0.9 * b.boundary.area[f].norm())) {b.boundary.surface_mask[f] &= ~bit; ++dropped;} else ++kept;
+    }
+    std::printf("kept %d dropped %d\n", kept, dropped);
+    sw.world->terms.push_back(std::make_unique<SurfacePressure>(b, bit, -300.0));
+    }
+  }
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
   Relaxed r;
@@ -140,6 +155,7 @@ Relaxed relax(const std::string& loading, const std::string& mode, double dampin
   double err = 0.0, scale = 0.0;
   for (std::size_t i = 0; i < body.size(); ++i) {
     err = std::max(err, (u[i] - shift - exact[i]).norm());
+    if (getenv("DBG")) { const Vec3 e = u[i] - shift - exact[i]; std::printf("E %.2e %.2e %.2e  X %.3f %.3f %.3f\n", e.x(), e.y(), e.z(), body.cloud.X[i].x(), body.cloud.X[i].y(), body.cloud.X[i].z()); }
     scale = std::max(scale, (exact[i] - exact.front()).norm());
   }
   r.displacement_error = err / scale;
