@@ -9,9 +9,6 @@
 #include "rkpm/rk/stabilization.hpp"
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -135,22 +132,6 @@ CaseResult run_lame_case(Scheme scheme, Resolution resolution, const CaseSetting
     en_num += gradient.weight[L] * material.energy_product(eps[L] - exact);
     en_den += gradient.weight[L] * material.energy_product(exact);
     strain_energy += 0.5 * gradient.weight[L] * material.energy_product(eps[L]);
-  }
-  if (std::getenv("RKPM_STUDY_DEBUG")) {  // DEBUG-TEMP
-    const int per_layer = static_cast<int>(cloud.size()) / resolution.layers;
-    for (int k = 0; k < resolution.layers; ++k) {
-      double mean = 0, mx = -1e9, mn = 1e9, tang = 0, exact_r = 0;
-      for (int m = 0; m < per_layer; ++m) {
-        const std::size_t L = std::size_t(k) * per_layer + m;
-        const Vec3 e = cloud.X[L].normalized();
-        const double ur = u[L].dot(e);
-        exact_r = lame.displacement(cloud.X[L]).dot(e);
-        mean += ur / per_layer; mx = std::max(mx, ur); mn = std::min(mn, ur);
-        tang = std::max(tang, (u[L] - ur * e).norm());
-      }
-      std::fprintf(stderr, "layer %d r=%.4f exact=%.6e mean=%.6e min=%.6e max=%.6e tangential_max=%.3e\n", k,
-                   cloud.X[std::size_t(k) * per_layer].norm(), exact_r, mean, mn, mx, tang);
-    }
   }
   result.l2_error = std::sqrt(l2_num / l2_den);
   result.energy_error = std::sqrt(en_num / en_den);

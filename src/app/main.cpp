@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   run->add_option("--out", out_dir, "Output directory (default: out/<scene name>)");
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
   run->add_option("--restart", restart, "Resume from a checkpoint written by an earlier run of the same scene");
-  run->add_option("--max-steps", max_steps, "Stop after this many steps (overrides [integrator] max_steps)")
+  run->add_option("--max-steps", max_steps, "Stop after this many steps (a partial run; exit code 0)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--quiet", quiet, "No progress line");
   run->add_flag("--allow-unstable-dt", allow_unstable,

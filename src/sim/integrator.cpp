@@ -173,8 +173,19 @@ void Integrator::step() {
   // The stable step follows the state (stiffening, contact): re-estimate now and then.
   if (world_.step % 10 == 0) {
     stable_dt_ = estimate_stable_dt();
-    if (dt_ > settings_.dt_safety * stable_dt_ && !settings_.allow_unstable_dt) dt_ = settings_.dt_safety * stable_dt_;
-    if (settings_.mode == Mode::Dynamic && settings_.dt <= 0.0) dt_ = settings_.dt_safety * stable_dt_;
+    const double automatic = settings_.dt_safety * stable_dt_;
+    if (settings_.dt > 0.0 && !dt_clamped_) {
+      // A user step is kept while it stays below the stable estimate, as at the start;
+      // once clamped, the run follows the automatic step.
+      if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
+        dt_ = automatic;
+        dt_clamped_ = true;
+      }
+    } else if (settings_.mode == Mode::Dynamic || dt_clamped_) {
+      dt_ = automatic;
+    } else {
+      dt_ = std::min(dt_, automatic);  // FIRE grows dt by itself, up to this ceiling
+    }
   }
 }
 
@@ -192,7 +203,9 @@ void Integrator::fire_update() {
   }
   const double dt_max = settings_.dt_safety * stable_dt_;
   if (power > 0.0) {
-    // Steer the velocity toward the force direction, keeping its magnitude.
+    // Steer the velocity toward the force direction, keeping its magnitude; the kinetic
+    // energy this removes (|mixed| <= |v|) goes to the ledger as dissipation.
+    const double kinetic_before = kinetic_energy();
     const double mix = ff > 0.0 ? fire_alpha_ * std::sqrt(vv / ff) : 0.0;
     for (auto& bp : world_.bodies) {
       Body& b = *bp;
@@ -201,6 +214,7 @@ void Integrator::fire_update() {
       for (Index i = 0; i < n; ++i) b.v[i] = (1.0 - fire_alpha_) * b.v[i] + mix * b.force[i];
       b.constraints.impose(b.d, b.v);
     }
+    ledger_.dissipated += kinetic_before - kinetic_energy();
     if (++fire_positive_steps_ > kFireMinPositive) {
       dt_ = std::min(dt_ * kFireIncrease, dt_max);
       fire_alpha_ *= kFireAlphaShrink;
@@ -289,11 +303,12 @@ std::vector<double> Integrator::save_state() const {
           settings_.domain_size,
           centre_.x(),
           centre_.y(),
-          centre_.z()};
+          centre_.z(),
+          dt_clamped_ ? 1.0 : 0.0};
 }
 
 void Integrator::load_state(const std::vector<double>& s) {
-  if (s.size() != 15) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
+  if (s.size() != 16) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
   dt_ = s[0];
   stable_dt_ = s[1];
   ledger_.external = s[2];
@@ -307,6 +322,7 @@ void Integrator::load_state(const std::vector<double>& s) {
   fire_positive_steps_ = static_cast<std::int64_t>(s[10]);
   settings_.domain_size = s[11];
   centre_ = Vec3(s[12], s[13], s[14]);
+  dt_clamped_ = s[15] != 0.0;
 }
 
 }  // namespace rkpm::sim

@@ -58,7 +58,6 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   const auto cells = scene.output.choice("cells") == "points" ? CellOutput::Points : CellOutput::Mesh;
   const std::int64_t checkpoint_every = scene.output.integer("checkpoint_every");
   std::int64_t max_steps = scene.integrator.integer("max_steps");
-  if (options.max_steps_override > 0) max_steps = options.max_steps_override;
   const std::uint64_t digest = file_digest(scene.file);
 
   const Body* shape_body = nullptr;
@@ -108,16 +107,15 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   int code = kSuccess;
   try {
     while (true) {
-      if (relax ? (world->step > 0 && integrator.converged()) : world->time >= t_end * (1.0 - 1e-12)) break;
-      if (world->step >= max_steps) {
-        if (relax) {
-          status = "not converged";
-          code = kNotConverged;
-        } else if (options.max_steps_override > 0) {
-          status = "stopped at max steps";
-        } else {
-          status = "max_steps reached";
-        }
+      const bool time_is_up = world->time >= t_end * (1.0 - 1e-12);
+      if (relax ? (world->step > 0 && integrator.converged()) : time_is_up) break;
+      if (options.max_steps_override > 0 && world->step >= options.max_steps_override) {
+        status = "stopped at --max-steps";  // asked for on the command line: not a failure
+        break;
+      }
+      if (world->step >= max_steps || (relax && time_is_up)) {
+        status = relax ? "not converged" : "max_steps reached before t_end";
+        code = kIncomplete;
         break;
       }
       integrator.step();
@@ -171,7 +169,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     log << fmt::format("the last good frame is kept in {}\n", series->pvd_path().string());
   }
   io::write_json_atomically(options.out_dir / "summary.json", json);
-  if (code == kSuccess || code == kNotConverged)
+  if (code == kSuccess || code == kIncomplete)
     log << fmt::format("{} after {} steps, t = {:.6g} s, {:.1f} s wall. ParaView: {}\n", status, world->step,
                        world->time, summary.wall_time, series->pvd_path().string());
   return code;

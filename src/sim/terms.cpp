@@ -1,6 +1,8 @@
 #include "rkpm/sim/terms.hpp"
 
 #include "rkpm/sim/build.hpp"
+#include "rkpm/sim/contact.hpp"
+#include "rkpm/sim/surface_tension.hpp"
 #include "rkpm/sim/volume_constraint.hpp"
 
 #include <fmt/format.h>
@@ -65,6 +67,36 @@ std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
     const std::string surface = p.text("surface");
     return std::make_unique<VolumeConstraint>(b, surface == "all" ? 0u : b.cloud.surface_bit(surface), p.real("bulk"),
                                               p.real("target"));
+  }
+  if (type == "surface_tension") {
+    Body& b = body_named("body");
+    try {
+      return std::make_unique<SurfaceTension>(b, p.text("surface"), p.real("gamma"));
+    } catch (const std::invalid_argument& e) {
+      throw SetupError(fmt::format("{}:{}: [term] {}", p.file(), p.table_line(), e.what()));
+    }
+  }
+  if (type == "contact") {
+    const auto& names = p.texts("bodies");
+    Body* a = world.find_body(names[0]);
+    Body* b = world.find_body(names[1]);
+    if (!a || !b)
+      throw SetupError(fmt::format("{}:{}: [term] bodies = [\"{}\", \"{}\"]: no such body", p.file(), p.line("bodies"),
+                                   names[0], names[1]));
+    ContactSettings s;
+    s.epsilon = p.real("epsilon");
+    s.s0 = p.real("s0");
+    s.cutoff = p.real("cutoff");
+    s.skin = p.real("skin");
+    s.beta = {p.reals("beta")[0], p.reals("beta")[1]};
+    s.law = p.choice("stiffness_law") == "linear" ? StiffnessLaw::linear : StiffnessLaw::none;
+    if (s.law == StiffnessLaw::linear) s.substrate = p.text("substrate") == names[0] ? 0 : 1;
+    s.stiffness_reference = p.real("stiffness_reference");
+    try {
+      return std::make_unique<Contact>(*a, *b, s);
+    } catch (const std::invalid_argument& e) {
+      throw SetupError(fmt::format("{}:{}: [term] {}", p.file(), p.table_line(), e.what()));
+    }
   }
   throw SetupError(fmt::format("{}:{}: [term] type = \"{}\": this term is declared in the scene format but not yet "
                                "available in this version of rkpm",

@@ -16,13 +16,13 @@ enum ExitCode : int {
   kInternalError = 1,
   kBadInput = 2,     // the scene (or a file it names) is wrong; nothing was written
   kUnstable = 3,     // the simulation blew up; the last good frame is kept
-  kNotConverged = 4, // relaxation reached max_steps before its convergence criterion
+  kIncomplete = 4,   // max_steps (or, relaxing, t_end) was reached before t_end or convergence
 };
 
 struct RunOptions {
   std::filesystem::path out_dir;      // where frames, checkpoints and summary.json go
   std::filesystem::path restart;      // checkpoint to resume from (empty: start fresh)
-  std::int64_t max_steps_override = 0;  // > 0: stop after this many steps (tests, restarts)
+  std::int64_t max_steps_override = 0;  // > 0: stop (successfully) after this many steps
   bool allow_unstable_dt = false;     // testing: keep a user dt above the stable estimate
   bool quiet = false;                 // no progress line
 };

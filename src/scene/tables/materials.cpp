@@ -69,10 +69,18 @@ ParamTable lce() {
       ParamSpec::real("zeta", "Pa").defaults(0.0)
           .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
                 "along h (contractile), zeta > 0 elongates it (extensile)."),
-      ParamSpec::choice("zeta_profile", {"uniform", "axial"}).defaults(std::string("uniform"))
-          .help("Spatial profile of the activity: uniform = zeta everywhere; axial = zeta (h0 . a)^2 with a = "
-                "zeta_axis, i.e. full activity where the reference director is along the axis (a cell's flat "
-                "faces) and none where it is perpendicular (its rim)."),
+      ParamSpec::choice("zeta_profile", {"uniform", "axial", "equatorial"}).defaults(std::string("uniform"))
+          .help("Spatial profile of the activity, with c = h0 . a the cosine between the reference director and "
+                "a = zeta_axis: uniform = zeta everywhere; axial = zeta |c|^p, full activity where h0 is along the "
+                "axis (a cell's flat faces), none where it is perpendicular (its rim); equatorial = zeta "
+                "(1 - c^2)^(p/2), the complement: active at the rim, passive in the faces (p = zeta_power)."),
+      ParamSpec::real("zeta_power", "-").at_least(0.5).at_most(64).defaults(2.0)
+          .help("Exponent p of the axial / equatorial activity profile; larger p confines the activity to "
+                "where h0 is closer to (axial) or further from (equatorial) the axis."),
+      ParamSpec::choice("zeta_layer", {"all", "inner", "outer"}).defaults(std::string("all"))
+          .help("Through-the-wall profile of the activity in a shell: all = the whole wall; inner / outer = "
+                "only the half of the wall nearer that surface. Activity in one half bends the wall like a "
+                "bimetal strip (a spontaneous curvature)."),
       ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
           .help("Axis a of the axial activity profile (normalised; must be non-zero)."),
   };

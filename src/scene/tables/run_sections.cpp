@@ -45,7 +45,7 @@ ParamTable integrator_section() {
       ParamSpec::real("damping", "1/s").at_least(0).defaults(0.0)
           .help("Mass-proportional damping coefficient c: force -c m v on every particle."),
       ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})
-          .help("Hard limit on the number of steps; reaching it ends the run with an error."),
+          .help("Hard limit on the number of steps; reaching it before t_end (or convergence) ends the run with exit code 4."),
       ParamSpec::real("relax_force_tol", "-").greater_than(0).defaults(1e-6)
           .help("relax mode: converged when the largest residual force on a particle, expressed as a "
                 "stress (|f_I| / V_I^(2/3)), falls below this fraction of the body's shear modulus."),

@@ -15,6 +15,13 @@ static void finish_contact(ParamSet& p) {
     throw p.error("cutoff", fmt::format("a cutoff larger than s0 = {} m (the potential's minimum)",
                                         format_value(s0)));
   }
+  if (p.choice("stiffness_law") == "linear") {
+    if (!p.has("substrate"))
+      throw p.error("stiffness_law", "a `substrate` key naming the body whose stiffness sets eps (stiffness_law = \"linear\")");
+    const auto& bodies = p.texts("bodies");
+    if (p.text("substrate") != bodies[0] && p.text("substrate") != bodies[1])
+      throw p.error("substrate", fmt::format("one of the two `bodies` (\"{}\" or \"{}\")", bodies[0], bodies[1]));
+  }
 }
 
 ParamTable contact() {
@@ -34,6 +41,14 @@ ParamTable contact() {
           .help("Interaction cutoff radius; must exceed s0."),
       ParamSpec::real("skin", "m").at_least(0).absent_means("0.5 s0")
           .help("Verlet skin: pair lists are rebuilt when a particle has moved skin/2."),
+      ParamSpec::choice("stiffness_law", {"none", "linear"}).defaults(std::string("none"))
+          .help("How eps depends on the substrate's elasticity (seed section 3.1): \"none\" = uniform; "
+                "\"linear\" = eps_J = eps * mu(X_J) / mu_ref at each substrate particle J, mu the "
+                "small-strain shear modulus."),
+      ParamSpec::text("substrate").refers_to(Reference::body).absent_means("required when stiffness_law = \"linear\"")
+          .help("The body (one of `bodies`) whose local shear modulus scales eps."),
+      ParamSpec::real("stiffness_reference", "Pa").at_least(0).defaults(0.0)
+          .help("mu_ref of the linear stiffness law; 0 = the volume-weighted mean shear modulus of the substrate."),
   };
   t.finish = finish_contact;
   return t;

@@ -1,0 +1,96 @@
+// Coarse-grained adhesive contact between two bodies (CGCM, seed Eq. 12-14).
+//
+// Continuum energy (Eq. 14): Pi_AC = int_1 int_2 beta1 beta2 phi(|x1 - x2|) dv2 dv1 with
+// the 12-6 Lennard-Jones potential of Eq. 13, phi(r) = eps (s0/r)^12 - 2 eps (s0/r)^6.
+// beta are molecules per CURRENT volume, so beta dv = beta0 dV is conserved: particle I
+// carries the fixed number of molecules n_I = beta0 V_I (V_I its reference volume).
+// Nodal quadrature of both integrals gives the pair sum
+//     Pi_AC = sum_{I in A} sum_{J in B, r_IJ < cutoff} n_I n_J w_J phi(r_IJ),
+//     r_IJ = |x_I - x_J|,  x = X + d (the generalized positions, see body.hpp),
+// with w_J = 1, or the substrate's local stiffness ratio under the `linear` stiffness
+// law (the seed: "eps ... is dependent on substrate elasticity"):
+//     eps_J = eps w_J,  w_J = mu(X_J) / mu_ref,
+// mu the small-strain shear modulus of the substrate at particle J and mu_ref given or
+// the volume-weighted mean. The forces are the exact gradient of this sum:
+//     f_I = -sum_J n_I n_J w_J phi'(r) (x_I - x_J)/r,   f_J = -(same pair term),
+// so each pair's forces are equal and opposite (linear momentum is conserved) and
+// the term is conservative (its energy is reported to the ledger).
+// Pairs come from a Verlet list with a skin (contact_pairs.hpp). The hard cutoff
+// truncates the r^-6 tail; docs/contact.md gives the resulting error of the
+// half-space traction law.
+#pragma once
+
+#include "rkpm/sim/contact_pairs.hpp"
+#include "rkpm/sim/world.hpp"
+
+#include <array>
+#include <vector>
+
+namespace rkpm::sim {
+
+// phi(r) = eps [(s0/r)^12 - 2 (s0/r)^6] (Eq. 13), minimum -eps at r = s0.
+struct LennardJones {
+  double eps = 0.0, s0 = 0.0;
+  double energy(double r) const;
+  double derivative(double r) const;         // phi'(r)
+  double second_derivative(double r) const;  // phi''(r)
+  // Largest eigenvalue magnitude of the pair Hessian d^2 phi / dx dx:
+  // max(|phi''(r)|, |phi'(r)| / r) (along and across the bond).
+  double stiffness(double r) const;
+};
+
+enum class StiffnessLaw { none, linear };
+
+struct ContactSettings {
+  double epsilon = 0.0;                 // eps [J]
+  double s0 = 0.0;                      // sigma0 [m]
+  double cutoff = 0.0;                  // [m]
+  double skin = 0.0;                    // [m]
+  std::array<double, 2> beta = {0.0, 0.0};  // molecules per reference volume [1/m^3]; 0: particles / volume
+  StiffnessLaw law = StiffnessLaw::none;
+  int substrate = 1;                    // which body (0 or 1) carries the stiffness law
+  double stiffness_reference = 0.0;     // mu_ref [Pa]; 0: volume-weighted mean over the substrate
+};
+
+class Contact final : public Term {
+ public:
+  Contact(Body& a, Body& b, const ContactSettings& settings);
+  std::string name() const override { return "contact"; }
+  void add_forces(World& world) override;
+  double stored_energy(const World&) const override { return energy_; }
+  // Critical step of the pair springs at the current configuration: with k_IJ the
+  // pair-Hessian bound above times n_I n_J w_J, Gershgorin's bound on the largest
+  // eigenvalue of M^-1/2 K M^-1/2 is omega^2 <= max_P sum_Q k_PQ (1/m_P + 1/sqrt(m_P m_Q)),
+  // and dt = 2 / omega. The integrator multiplies by dt_safety and re-estimates every 10 steps.
+  double stable_dt(const World&) const override;
+  void report(const World&, io::Json& summary) const override;
+
+  // At the last force evaluation: the energy, the number of pairs inside the cutoff,
+  // the total force on body A (B carries its opposite).
+  double energy() const { return energy_; }
+  std::size_t active_pairs() const { return active_pairs_; }
+  const ContactPairs& pairs() const { return pairs_; }
+  // Molecules of each particle, n_I w_I (index 0 = body A, 1 = body B).
+  const std::vector<double>& molecules(int body) const { return molecules_[body]; }
+  const std::vector<Vec3>& force_on(int body) const { return force_[body]; }
+
+ private:
+  Body& a_;
+  Body& b_;
+  LennardJones lj_;
+  double cutoff_;
+  ContactPairs pairs_;
+  std::array<std::vector<double>, 2> molecules_;
+  std::array<std::vector<Vec3>, 2> force_;
+  std::vector<Vec3> pair_force_;    // on A's particle of each listed pair
+  std::vector<double> row_energy_;  // per particle of A
+  double energy_ = 0.0, mu_reference_ = 0.0;
+  std::size_t active_pairs_ = 0;
+  StiffnessLaw law_;
+  int substrate_;
+};
+
+// Small-strain shear modulus of a body at particle i (Mooney-Rivlin: 2 (c1 + c2); LCE: mu).
+double shear_modulus_at(const Body& body, std::size_t i);
+
+}  // namespace rkpm::sim

@@ -1,0 +1,57 @@
+// Candidate particle pairs between two bodies for a short-range interaction
+// (a Verlet list with a skin).
+//
+// At a build, a nanoflann kd-tree over body B's current positions is queried with
+// radius cutoff + skin around every particle of body A. The list is kept while no
+// particle of either body has moved more than skin/2 since that build: two particles
+// now within the cutoff were then within cutoff + 2 (skin/2), so no pair is missed.
+// The force loop filters the list by the cutoff.
+//
+// Storage is compressed rows: row I (a particle of A) lists its partners J in B in
+// increasing id; the transpose lists, for each J, the pair entries that reference it,
+// ordered by I. Sums over either index therefore run in a fixed order (deterministic,
+// no atomics), whatever the tree's layout or the number of threads.
+#pragma once
+
+#include "rkpm/common/types.hpp"
+
+#include <cstddef>
+#include <vector>
+
+namespace rkpm::sim {
+
+class ContactPairs {
+ public:
+  ContactPairs(double cutoff, double skin);
+
+  // Rebuilds the list if it was never built, if a body's size changed, or if some
+  // particle of A or B moved more than skin/2 since the last build. Returns true
+  // when it rebuilt.
+  bool update(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb);
+  // Unconditional rebuild at the given positions.
+  void rebuild(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb);
+
+  double cutoff() const { return cutoff_; }
+  double skin() const { return skin_; }
+  std::size_t builds() const { return builds_; }
+  std::size_t size() const { return partner_.size(); }
+
+  // Pairs of row I (particle I of A): entries row_offset[I] .. row_offset[I+1]-1.
+  const std::vector<Index>& row_offset() const { return row_offset_; }
+  const std::vector<Index>& partner() const { return partner_; }  // J in B of each entry
+  // For particle J of B: entries column_entry[column_offset[J] .. column_offset[J+1]-1].
+  const std::vector<Index>& column_offset() const { return column_offset_; }
+  const std::vector<Index>& column_entry() const { return column_entry_; }
+  const std::vector<Index>& entry_row() const { return entry_row_; }  // I of each entry
+
+ private:
+  static double largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build);
+
+  double cutoff_, skin_;
+  std::size_t builds_ = 0;
+  std::vector<Vec3> xa_built_, xb_built_;  // positions at the last build
+  std::vector<Index> row_offset_, partner_, entry_row_;
+  std::vector<Index> column_offset_, column_entry_;
+};
+
+}  // namespace rkpm::sim

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# Particle-count study of the red-blood-cell relaxation (examples/rbc/rbc.toml):
+# the same scene at several resolutions (face_cells / layers of the shell), each
+# run to convergence; shape metrics, steps and wall time; error against
+# Evans-Fung and against the finest run. Writes rbc-study/{study.csv, *.png, table.md}.
+# Usage: bash scripts/rbc-study.sh [BUILD_DIR] [OUT_DIR] [RESOLUTIONS...]
+#   RESOLUTIONS are face_cells:layers pairs, default 16:3 24:4 32:5 60:6
+#   (4,614 / 13,832 / 30,730 / 129,612 particles). The finest run takes hours.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+out=${2:-$here/rbc-study}
+shift $(( $# > 2 ? 2 : $# ))
+resolutions=("$@")
+[ ${#resolutions[@]} -eq 0 ] && resolutions=(16:3 24:4 32:5 60:6)
+threads=${OMP_NUM_THREADS:-2}
+mkdir -p "$out"
+
+for res in "${resolutions[@]}"; do
+  fc=${res%%:*}; ly=${res##*:}
+  tag="fc${fc}_l${ly}"
+  [ -f "$out/$tag/summary.json" ] && { echo "$tag: done before, kept"; continue; }
+  sed -e "s/^face_cells = .*/face_cells = $fc/" -e "s/^layers = .*/layers = $ly/" \
+      -e "s/^name = \"rbc\"/name = \"rbc_$tag\"/" "$here/examples/rbc/rbc.toml" > "$out/$tag.toml"
+  echo "$tag: running"
+  OMP_NUM_THREADS=$threads "$build/src/app/rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
+done
+
+python3 - "$out" "${resolutions[@]}" <<'PY'
+import csv, json, math, sys
+out, res = sys.argv[1], sys.argv[2:]
+rows = []
+for r in res:
+    fc, ly = r.split(":")
+    tag = f"fc{fc}_l{ly}"
+    try:
+        s = json.load(open(f"{out}/{tag}/summary.json"))
+    except OSError:
+        continue
+    sh = s["shape"]
+    prof = list(csv.DictReader(open(f"{out}/{tag}/shape_profile.csv")))
+    rows.append(dict(tag=tag, particles=s["total_particles"], steps=s["steps"], wall_s=s["wall_time"],
+                     converged=s.get("converged"), h_ratio=sh["h_min_over_h_max"], r_hmax=sh["r_hmax_over_R"],
+                     rms_ef=sh["rms_vs_evans_fung_over_D"], updown=sh["updown_asymmetry"],
+                     reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6, prof=prof))
+if not rows:
+    sys.exit("no finished runs")
+fine = max(rows, key=lambda r: r["particles"])
+def thickness_over_D(row, x):  # h(r)/D at r = x D/2, linear in the bins
+    D = row["diameter_um"] * 1e-6
+    pts = [(2 * float(p["r"]) / D, float(p["thickness"]) / D) for p in row["prof"]]
+    for (x0, h0), (x1, h1) in zip(pts, pts[1:]):
+        if x0 <= x <= x1:
+            return h0 + (h1 - h0) * (x - x0) / (x1 - x0)
+    return pts[0][1] if x < pts[0][0] else pts[-1][1]
+xs = [0.05 + 0.9 * k / 40 for k in range(41)]
+for r in rows:
+    r["rms_vs_finest"] = math.sqrt(sum((thickness_over_D(r, x) - thickness_over_D(fine, x)) ** 2 for x in xs) / len(xs))
+keys = ["tag", "particles", "steps", "wall_s", "converged", "h_ratio", "r_hmax", "rms_ef", "rms_vs_finest",
+        "updown", "reduced_volume", "diameter_um"]
+with open(f"{out}/study.csv", "w") as f:
+    f.write(",".join(keys) + "\n")
+    for r in sorted(rows, key=lambda r: r["particles"]):
+        f.write(",".join(str(r[k]) for k in keys) + "\n")
+with open(f"{out}/table.md", "w") as f:
+    f.write("| particles | steps | wall [s] | h_min/h_max | r(h_max)/R | RMS vs EF / D | RMS vs finest / D | up-down | reduced volume |\n")
+    f.write("|---|---|---|---|---|---|---|---|---|\n")
+    for r in sorted(rows, key=lambda r: r["particles"]):
+        f.write(f"| {r['particles']} | {r['steps']} | {r['wall_s']:.0f} | {r['h_ratio']:.3f} | {r['r_hmax']:.3f} | "
+                f"{r['rms_ef']:.3f} | {r['rms_vs_finest']:.4f} | {r['updown']:.3f} | {r['reduced_volume']:.3f} |\n")
+print(open(f"{out}/table.md").read())
+PY
+
+gnuplot <<EOF
+set datafile separator ","
+set terminal png size 900,600
+set key top right
+set logscale x
+set grid
+set output "$out/study_vs_particles.png"
+set xlabel "particles"
+set ylabel "metric"
+plot "$out/study.csv" every ::1 using 2:6 with linespoints title "h_min/h_max (EF 0.316)", \
+     "" every ::1 using 2:7 with linespoints title "r(h_max)/R (EF 0.70)", \
+     "" every ::1 using 2:8 with linespoints title "RMS vs Evans-Fung / D", \
+     "" every ::1 using 2:9 with linespoints title "RMS vs finest / D"
+set output "$out/study_vs_time.png"
+set xlabel "wall time [s]"
+plot "$out/study.csv" every ::1 using 4:8 with linespoints title "RMS vs Evans-Fung / D", \
+     "" every ::1 using 4:9 with linespoints title "RMS vs finest / D", \
+     "" every ::1 using 4:6 with linespoints title "h_min/h_max"
+EOF
+echo "wrote $out/study.csv, $out/table.md, $out/study_vs_particles.png, $out/study_vs_time.png"

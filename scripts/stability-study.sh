@@ -1,0 +1,165 @@
+#!/usr/bin/env bash
+# Stability study of the explicit integrator on stiff and extreme cases: writes
+# docs/figures/stability.csv and the generated table of docs/stability.md.
+# Every case is a scene file generated into a temporary directory and run with
+# `rkpm run` for a fixed number of steps (free bodies, no damping, so the energy
+# ledger must balance); the columns come from each run's summary.json and
+# history.csv (one row per frame).
+# Usage: bash scripts/stability-study.sh
+# The build directory is build/ unless RKPM_BUILD_DIR says otherwise; RKPM names an
+# already built executable instead; RKPM_THREADS sets the thread count (default 2).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${RKPM_BUILD_DIR:-"$here/build"}
+threads=${RKPM_THREADS:-2}
+figures="$here/docs/figures"
+doc="$here/docs/stability.md"
+csv="$figures/stability.csv"
+
+command -v jq >/dev/null || { echo "stability-study.sh: jq is required to read summary.json" >&2; exit 1; }
+grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||
+  { echo "stability-study.sh: $doc lacks the BEGIN/END GENERATED markers" >&2; exit 1; }
+rkpm=${RKPM:-}   # an already built rkpm executable, or build one
+if [ -z "$rkpm" ]; then
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target rkpm -j"$(nproc)"
+  rkpm="$build/src/app/rkpm"
+fi
+
+work=$(mktemp -d)
+table=$(mktemp)
+trap 'rm -rf "$work" "$table" "$doc.tmp"' EXIT
+
+size=1e-5       # block edge [m]
+rho=1000        # [kg/m^3]
+steps=10000     # steps per case
+
+# scene NAME CELLS RK_TOML INITIAL_TOML: a free block of side $size made of $MATERIAL.
+# The frame interval is steps/20 times a step estimate from the P-wave speed of
+# the material (MU and KBULK below), so history.csv gets about 20 rows.
+scene() {
+  local name=$1 cells=$2 rk=$3 initial=$4
+  local dt_est every
+  dt_est=$(awk -v h="$size" -v n="$cells" -v mu="$MU" -v k="$KBULK" -v rho="$rho" \
+    'BEGIN { printf "%.6g", 0.5 * h / n / sqrt((k + 4 * mu / 3) / rho) }')
+  every=$(awk -v dt="$dt_est" -v s="$steps" 'BEGIN { printf "%.6g", dt * s / 20 }')
+  cat > "$work/$name.toml" <<TOML
+[scene]
+name = "$name"
+[integrator]
+t_end = $(awk -v dt="$dt_est" -v s="$steps" 'BEGIN { printf "%.6g", 100 * dt * s }')
+[output]
+every = $every
+cells = "points"
+[[body]]
+name = "block"
+density = $rho
+[body.cloud]
+generator = "block"
+size = [$size, $size, $size]
+cells = [$cells, $cells, $cells]
+jitter = 0.1
+[body.material]
+$MATERIAL
+[body.rk]
+$rk
+[body.initial]
+$initial
+TOML
+}
+
+# mooney C1 LAMBDA / lce MU BULK ZETA: set MATERIAL (the [body.material] keys) and the
+# small-strain moduli MU, KBULK that the step estimate of `scene` uses.
+mooney() {
+  MU=$(awk -v c="$1" 'BEGIN { print 2.5 * c }'); KBULK=$(awk -v l="$2" 'BEGIN { print 4 * l }')
+  MATERIAL=$(printf 'model = "mooney_rivlin"\nc1 = %s\nc2 = %s\nlambda = %s' "$1" "$(awk -v c="$1" 'BEGIN { print c / 4 }')" "$2")
+}
+lce() {
+  MU=$1; KBULK=$2
+  MATERIAL=$(printf 'model = "lce"\nmu = %s\nbulk = %s\nmobility = 1e-3\nzeta = %s\n[body.director]\ninitial = "fixed"\nvector = [0, 0, 1]\nboundary = "free"' "$1" "$2" "$3")
+}
+
+scni='integration = "scni"'
+wiggle='stretch = [1.05, 0.97, 1.0]'   # the reference case is released from a small stretch
+
+echo "case,description,status,exit_code,steps,dt,max_energy_error,min_J,steps_per_second,diagnosis" > "$csv"
+{
+  echo "| case | description | result | steps | dt [s] | max energy error | min J | steps/s |"
+  echo "|---|---|---|---|---|---|---|---|"
+} > "$table"
+
+run_case() {
+  local name=$1 description=$2 max_steps=${3:-$steps}
+  local out="$work/out-$name" code=0
+  "$rkpm" run "$work/$name.toml" --out "$out" --threads "$threads" --quiet --max-steps "$max_steps" \
+    > "$work/$name.log" 2>&1 || code=$?
+  local s="$out/summary.json"
+  if [ ! -f "$s" ]; then
+    echo "stability-study.sh: case $name wrote no summary (exit $code):" >&2; cat "$work/$name.log" >&2; exit 1
+  fi
+  local status nsteps dt wall diagnosis maxerr minj rate
+  status=$(jq -r .status "$s"); nsteps=$(jq -r .steps "$s"); dt=$(jq -r .dt "$s"); wall=$(jq -r .wall_time "$s")
+  diagnosis=$(jq -r '.diagnosis // ""' "$s")
+  # Largest energy error and smallest J over the frames (history.csv), and the final state.
+  read -r maxerr minj < <(awk -F, 'NR > 1 { e = ($10 < 0 ? -$10 : $10); if (e > m) m = e; if (j == "" || $12 < j) j = $12 }
+                                   END { printf "%.3g %.4g\n", m, j }' "$out/history.csv")
+  if [ "$code" -ne 3 ]; then
+    local final_err final_j
+    final_err=$(jq -r '.energy.relative_error' "$s"); final_j=$(jq -r .min_J "$s")
+    read -r maxerr minj < <(awk -v a="$maxerr" -v b="$final_err" -v c="$minj" -v d="$final_j" \
+      'BEGIN { printf "%.3g %.4g\n", (a > b ? a : b), (c < d ? c : d) }')
+  fi
+  rate=$(awk -v n="$nsteps" -v w="$wall" 'BEGIN { printf "%.0f", (w > 0 ? n / w : 0) }')
+  local result="stable"
+  if [ "$code" -eq 3 ]; then result="blew up: ${diagnosis%%;*}"; elif [ "$code" -ne 0 ]; then result="exit $code ($status)"; fi
+  printf '%s,"%s",%s,%s,%s,%s,%s,%s,%s,"%s"\n' "$name" "$description" "$status" "$code" "$nsteps" "$dt" "$maxerr" \
+    "$minj" "$rate" "${diagnosis//\"/\'}" >> "$csv"
+  printf '| %s | %s | %s | %s | %.3g | %s | %s | %s |\n' "$name" "$description" "$result" "$nsteps" "$dt" "$maxerr" \
+    "$minj" "$rate" >> "$table"
+  echo "$name: $result, $nsteps steps, max energy error $maxerr, min J $minj, $rate steps/s"
+}
+
+# Near-incompressible Mooney-Rivlin: lambda / c1 = 1e2, 1e3, 1e4 (c1 = 400 Pa, c2 = c1 / 4).
+mooney 400 4000; scene reference 6 "$scni" "$wiggle";            run_case reference "Mooney-Rivlin, lambda/c1 = 10, 6^3 cells"
+for r in 1e2 1e3 1e4; do
+  mooney 400 "$(awk -v r="$r" 'BEGIN { print 400 * r }')"
+  scene "mr_lambda_$r" 6 "$scni" "$wiggle"
+  run_case "mr_lambda_$r" "Mooney-Rivlin, lambda/c1 = $r"
+done
+# LCE bulk modulus K = 1e2, 1e3, 1e4 mu (mu = 1000 Pa, s = 2, director along z).
+for r in 1e2 1e3 1e4; do
+  lce 1000 "$(awk -v r="$r" 'BEGIN { print 1000 * r }')" 0
+  scene "lce_bulk_$r" 6 "$scni" "$wiggle"
+  run_case "lce_bulk_$r" "LCE, K/mu = $r"
+done
+# Large initial stretch and compression, released (Mooney-Rivlin, lambda/c1 = 10).
+mooney 400 4000; scene stretch_3 6 "$scni" 'stretch = [3.0, 1.0, 1.0]';    run_case stretch_3 "released from stretch 3 along x"
+mooney 400 4000; scene compress_0.3 6 "$scni" 'stretch = [0.3, 1.0, 1.0]'; run_case compress_0.3 "released from compression 0.3 along x"
+mooney 400 4000; scene stretch_3_all 6 "$scni" 'stretch = [3.0, 3.0, 3.0]'; run_case stretch_3_all "released from stretch 3 in all directions"
+mooney 400 4000; scene compress_0.3_all 6 "$scni" 'stretch = [0.3, 0.3, 0.3]'; run_case compress_0.3_all "released from compression 0.3 in all directions"
+# High activity: |zeta| = 0.5, 2, 10 mu, contractile and extensile (LCE, K = 100 mu).
+for z in 0.5 2 10 -2 -10; do
+  lce 1000 1e5 "$(awk -v z="$z" 'BEGIN { print 1000 * z }')"
+  scene "lce_zeta_$z" 6 "$scni" "$wiggle"
+  run_case "lce_zeta_$z" "LCE, K = 100 mu, zeta = $z mu"
+done
+# Random initial velocities of 0.1 and 1 times the shear-wave speed (1 m/s).
+mooney 400 4000; scene random_0.1 6 "$scni" 'random_velocity = 0.1'; run_case random_0.1 "random velocities, amplitude 0.1 c_s"
+mooney 400 4000; scene random_1 6 "$scni" 'random_velocity = 1.0';   run_case random_1 "random velocities, amplitude 1 c_s"
+# Very coarse and very fine clouds.
+mooney 400 4000; scene coarse 2 "$scni" "$wiggle"; run_case coarse "very coarse cloud, 2^3 cells (27 particles)"
+mooney 400 4000; scene fine 16 "$scni" "$wiggle"; run_case fine "fine cloud, 16^3 cells (4913 particles)" 3000
+# Contrasts: no stabilization, and direct nodal integration with and without it.
+mooney 400 4000; scene scni_unstabilized 6 "$scni"$'\nstabilization = 0' 'random_velocity = 0.1'
+run_case scni_unstabilized "SCNI without stabilization, random velocities 0.1 c_s"
+mooney 400 4000; scene direct 6 'integration = "direct"' 'random_velocity = 0.1'
+run_case direct "direct nodal integration, stabilization 0.1, random velocities 0.1 c_s"
+mooney 400 4000; scene direct_unstabilized 6 $'integration = "direct"\nstabilization = 0' 'random_velocity = 0.1'
+run_case direct_unstabilized "direct nodal integration without stabilization, random velocities 0.1 c_s"
+
+awk -v table="$table" '
+  /<!-- BEGIN GENERATED/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
+  /<!-- END GENERATED/   { skip = 0 }
+  !skip                  { print }' "$doc" > "$doc.tmp"
+mv "$doc.tmp" "$doc"
+echo "wrote $csv and the table in $doc"

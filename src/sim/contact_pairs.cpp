@@ -1,0 +1,77 @@
+#include "rkpm/sim/contact_pairs.hpp"
+
+#include "rkpm/rk/neighbor_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rkpm::sim {
+
+ContactPairs::ContactPairs(double cutoff, double skin) : cutoff_(cutoff), skin_(skin) {
+  if (!(cutoff > 0.0) || !(skin >= 0.0))
+    throw std::invalid_argument("contact pair list: expected cutoff > 0 and skin >= 0, got cutoff = " +
+                                std::to_string(cutoff) + ", skin = " + std::to_string(skin));
+}
+
+double ContactPairs::largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build) {
+  double worst = 0.0;
+  const auto n = static_cast<Index>(x.size());
+#pragma omp parallel for schedule(static) reduction(max : worst)
+  for (Index i = 0; i < n; ++i) worst = std::max(worst, (x[i] - at_build[i]).squaredNorm());
+  return std::sqrt(worst);
+}
+
+bool ContactPairs::update(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb) {
+  const bool stale = builds_ == 0 || xa.size() != xa_built_.size() || xb.size() != xb_built_.size() ||
+                     largest_move(xa, xa_built_) > 0.5 * skin_ || largest_move(xb, xb_built_) > 0.5 * skin_;
+  if (stale) rebuild(xa, xb);
+  return stale;
+}
+
+void ContactPairs::rebuild(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb) {
+  xa_built_ = xa;
+  xb_built_ = xb;
+  ++builds_;
+  const auto na = static_cast<Index>(xa.size());
+  const auto nb = static_cast<Index>(xb.size());
+  const double radius = cutoff_ + skin_;
+
+  // Rows in parallel into per-row buffers, then concatenated in row order.
+  std::vector<std::vector<Index>> rows(static_cast<std::size_t>(na));
+  if (nb > 0) {
+    const rk::NeighborSearch search(xb_built_);
+#pragma omp parallel
+    {
+      std::vector<std::pair<Index, double>> found;
+#pragma omp for schedule(dynamic, 64)
+      for (Index i = 0; i < na; ++i) {
+        search.query(xa[i], radius, found);  // sorted by id
+        auto& row = rows[static_cast<std::size_t>(i)];
+        row.reserve(found.size());
+        for (const auto& f : found) row.push_back(f.first);
+      }
+    }
+  }
+  row_offset_.assign(static_cast<std::size_t>(na) + 1, 0);
+  for (Index i = 0; i < na; ++i)
+    row_offset_[i + 1] = row_offset_[i] + static_cast<Index>(rows[static_cast<std::size_t>(i)].size());
+  partner_.resize(static_cast<std::size_t>(row_offset_.back()));
+  entry_row_.resize(partner_.size());
+  for (Index i = 0; i < na; ++i) {
+    std::copy(rows[i].begin(), rows[i].end(), partner_.begin() + row_offset_[i]);
+    std::fill(entry_row_.begin() + row_offset_[i], entry_row_.begin() + row_offset_[i + 1], i);
+  }
+
+  // Transpose by counting sort: entries of each column stay in increasing row order.
+  column_offset_.assign(static_cast<std::size_t>(nb) + 1, 0);
+  for (Index j : partner_) ++column_offset_[j + 1];
+  for (Index j = 0; j < nb; ++j) column_offset_[j + 1] += column_offset_[j];
+  column_entry_.resize(partner_.size());
+  std::vector<Index> next(column_offset_.begin(), column_offset_.end() - 1);
+  for (Index e = 0; e < static_cast<Index>(partner_.size()); ++e) column_entry_[next[partner_[e]]++] = e;
+}
+
+}  // namespace rkpm::sim

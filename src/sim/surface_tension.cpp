@@ -1,0 +1,91 @@
+#include "rkpm/sim/surface_tension.hpp"
+
+#include "rkpm/io/json.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+namespace {
+
+// Area of triangle (a, b, c); adds its gradient to ga, gb, gc (scaled by `weight`).
+double triangle_area(const Vec3& a, const Vec3& b, const Vec3& c, double weight, Vec3* ga, Vec3* gb, Vec3* gc) {
+  const Vec3 n = (b - a).cross(c - a);
+  const double twice = n.norm();
+  if (ga && twice > 0.0) {
+    const Vec3 unit = n / twice;
+    // d|n|/da = unit x (c - b), cyclically; A = |n| / 2.
+    *ga += (0.5 * weight) * unit.cross(c - b);
+    *gb += (0.5 * weight) * unit.cross(a - c);
+    *gc += (0.5 * weight) * unit.cross(b - a);
+  }
+  return 0.5 * twice;
+}
+
+}  // namespace
+
+double face_area(const particles::BoundaryFace& face, const std::vector<Vec3>& x, Vec3* grad) {
+  const auto* n = face.nodes;
+  if (face.n_nodes == 3) {
+    return triangle_area(x[n[0]], x[n[1]], x[n[2]], 1.0, grad, grad ? grad + 1 : nullptr, grad ? grad + 2 : nullptr);
+  }
+  // Quadrilateral: mean of the two triangulations (diagonal 0-2 and diagonal 1-3).
+  auto g = [grad](int k) { return grad ? grad + k : nullptr; };
+  double area = 0.0;
+  area += triangle_area(x[n[0]], x[n[1]], x[n[2]], 0.5, g(0), g(1), g(2));
+  area += triangle_area(x[n[0]], x[n[2]], x[n[3]], 0.5, g(0), g(2), g(3));
+  area += triangle_area(x[n[1]], x[n[2]], x[n[3]], 0.5, g(1), g(2), g(3));
+  area += triangle_area(x[n[1]], x[n[3]], x[n[0]], 0.5, g(1), g(3), g(0));
+  return 0.5 * area;
+}
+
+SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double gamma)
+    : body_(body), surface_(surface), gamma_(gamma) {
+  const auto& cloud = body.cloud;
+  const std::uint32_t surface_bit = surface == "all" ? 0u : cloud.surface_bit(surface);
+  if (surface != "all" && surface_bit == 0u)
+    throw std::invalid_argument("surface_tension: body '" + body.name + "' has no surface named '" + surface + "'");
+  for (std::size_t f = 0; f < cloud.boundary_faces.size(); ++f) {
+    const auto& face = cloud.boundary_faces[f];
+    bool on = true;
+    for (int k = 0; k < face.n_nodes && surface_bit != 0u; ++k) on = on && (cloud.surface_mask[face.nodes[k]] & surface_bit);
+    if (on) faces_.push_back(static_cast<std::int32_t>(f));
+  }
+  if (faces_.empty())
+    throw std::invalid_argument("surface_tension: surface '" + surface + "' of body '" + body.name + "' has no faces");
+  initial_area_ = area_ = measure_area();
+}
+
+double SurfaceTension::measure_area() const {
+  double area = 0.0;
+  for (auto f : faces_) area += face_area(body_.cloud.boundary_faces[f], body_.x, nullptr);
+  return area;
+}
+
+void SurfaceTension::add_forces(World&) {
+  // Serial over faces: the scatter to the face nodes runs in a fixed order.
+  const auto& faces = body_.cloud.boundary_faces;
+  double area = 0.0;
+  for (auto f : faces_) {
+    const auto& face = faces[f];
+    Vec3 grad[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    area += face_area(face, body_.x, grad);
+    for (int k = 0; k < face.n_nodes; ++k) body_.force[face.nodes[k]] -= gamma_ * grad[k];
+  }
+  area_ = area;
+}
+
+void SurfaceTension::report(const World&, io::Json& summary) const {
+  io::Json j = io::Json::object();
+  j.set("body", body_.name);
+  j.set("surface", surface_);
+  j.set("gamma", gamma_);
+  j.set("initial_area", initial_area_);
+  j.set("area", area_);
+  j.set("energy", gamma_ * area_);
+  // One entry per term: a scene may declare several tensions (one per interface).
+  summary.set("surface_tension " + body_.name + " " + surface_, j);
+}
+
+}  // namespace rkpm::sim

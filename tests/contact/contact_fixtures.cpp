@@ -1,0 +1,51 @@
+#include "contact_fixtures.hpp"
+
+#include "rkpm/sim/build.hpp"
+
+namespace rkpm::sim::testing {
+
+std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<Vec3>& X,
+                                    const std::vector<double>& volume, double density) {
+  auto body = std::make_unique<Body>();
+  body->name = name;
+  body->density = density;
+  body->cloud.name = name;
+  body->cloud.X = X;
+  body->cloud.volume = volume;
+  const std::size_t n = X.size();
+  body->mass.resize(n);
+  for (std::size_t i = 0; i < n; ++i) body->mass[i] = density * volume[i];
+  body->d.assign(n, Vec3::Zero());
+  body->v.assign(n, Vec3::Zero());
+  body->a.assign(n, Vec3::Zero());
+  body->x = X;
+  body->force.assign(n, Vec3::Zero());
+  materials::MooneyRivlin mr;
+  mr.c1 = 400.0;
+  mr.c2 = 100.0;
+  mr.lambda = 2000.0;
+  body->material = MooneyRivlinMaterial{std::vector<materials::MooneyRivlin>(n, mr)};
+  return body;
+}
+
+void move_to(Body& body, const std::vector<Vec3>& d) {
+  body.d = d;
+  for (std::size_t i = 0; i < body.size(); ++i) body.x[i] = body.cloud.X[i] + d[i];
+}
+
+BuiltWorld world_from_text(const std::string& toml) {
+  BuiltWorld w;
+  w.scene = scene::parse_scene(toml, "test.toml");
+  w.world = build_world(w.scene);
+  return w;
+}
+
+double Random::uniform() {
+  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
+}
+
+}  // namespace rkpm::sim::testing

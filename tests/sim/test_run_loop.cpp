@@ -1,0 +1,250 @@
+// The run loop: bit-for-bit restart from a checkpoint, the diagnosis of a blow-up
+// with the last good frame kept, and the clamping of a too-large user step.
+#include "sim_fixtures.hpp"
+#include "vtu_read_back.hpp"
+
+#include "rkpm/io/pvd_series.hpp"
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <regex>
+#include <sstream>
+
+namespace rkpm::sim {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+using testing::with;
+using testing::write_text;
+
+// A Mooney-Rivlin block released from a stretch, and an active LCE ball whose
+// director evolves (mobility, Frank term, surface anchoring): every kind of state a
+// checkpoint must carry.
+const std::string kTwoBodies = R"([scene]
+name = "restart"
+[integrator]
+t_end = 1.0
+dt_safety = 0.4
+[output]
+every = {every}
+checkpoint_every = 10
+[[body]]
+name = "block"
+[body.cloud]
+generator = "block"
+size = [1e-5, 1e-5, 1e-5]
+cells = [3, 3, 3]
+jitter = 0.1
+[body.material]
+model = "mooney_rivlin"
+c1 = 400
+c2 = 100
+lambda = 4000
+[body.initial]
+stretch = [1.1, 0.95, 1.0]
+random_velocity = 1e-3
+[[body.boundary]]
+surface = "zmin"
+[[body]]
+name = "gel"
+[body.cloud]
+generator = "sphere"
+center = [3e-5, 0, 0]
+radius = 5e-6
+cells = 4
+[body.material]
+model = "lce"
+mu = 1000
+bulk = 1e5
+kappa = 1e-12
+mobility = 1e-2
+zeta = 300
+[body.director]
+initial = "radial"
+[body.initial]
+random_velocity = 1e-3
+[[term]]
+type = "body_force"
+body = "gel"
+acceleration = [0, 0, -1e3]
+)";
+
+struct RunResult {
+  int code = -1;
+  std::string log;
+};
+
+RunResult run_file(const fs::path& scene_file, const fs::path& out, std::int64_t max_steps, const fs::path& restart = {},
+        bool allow_unstable_dt = false) {
+  const scene::Scene scene = scene::load_scene(scene_file.string());
+  RunOptions options;
+  options.out_dir = out;
+  options.restart = restart;
+  options.max_steps_override = max_steps;
+  options.allow_unstable_dt = allow_unstable_dt;
+  options.quiet = true;
+  std::ostringstream log;
+  RunResult r;
+  r.code = run_scene(scene, options, log);
+  r.log = log.str();
+  return r;
+}
+
+// The number after `"key": ` in a summary.json.
+double summary_number(const fs::path& summary, const std::string& key) {
+  const std::string text = read_text(summary);
+  const std::smatch m = [&] {
+    std::smatch match;
+    std::regex_search(text, match, std::regex("\"" + key + "\": (-?[0-9.eE+-]+)"));
+    return match;
+  }();
+  if (m.empty()) throw std::runtime_error("no number '" + key + "' in " + summary.string());
+  return std::stod(m[1].str());
+}
+
+io::test::ReadBack last_frame(const fs::path& out) {
+  const auto entries = io::read_pvd(out / "frames.pvd");
+  if (entries.empty()) throw std::runtime_error("empty series in " + out.string());
+  return io::test::read_vtu_back(out / entries.back().file);
+}
+
+TEST(Restart, ResumedRunEndsBitForBitLikeTheUninterruptedOne) {
+  testing::ScopedThreads two(2);  // the contract: same scene, build and thread count
+  const fs::path dir = testing::fresh_dir("restart");
+  const fs::path scene_file = dir / "restart.toml";
+  write_text(scene_file, with(kTwoBodies, "every", "1e-7"));
+
+  const RunResult whole = run_file(scene_file, dir / "whole", 40);
+  ASSERT_EQ(whole.code, kSuccess) << whole.log;
+
+  const RunResult first = run_file(scene_file, dir / "split", 20);
+  ASSERT_EQ(first.code, kSuccess) << first.log;
+  fs::copy_file(dir / "split" / "checkpoint.bin", dir / "step20.bin");
+  const RunResult second = run_file(scene_file, dir / "split", 40, dir / "step20.bin");
+  ASSERT_EQ(second.code, kSuccess) << second.log;
+
+  // The checkpoints written at step 40 hold the whole dynamic state (d, v, a, the
+  // directors, constraint targets, the integrator's ledger and FIRE state).
+  const std::string a = read_text(dir / "whole" / "checkpoint.bin"), b = read_text(dir / "split" / "checkpoint.bin");
+  std::printf("checkpoint at step 40: %zu bytes uninterrupted, %zu bytes resumed, identical: %s\n", a.size(), b.size(),
+              a == b ? "yes" : "no");
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, read_text(dir / "step20.bin"));  // the state did change after step 20
+
+  for (const char* key : {"steps", "simulated_time", "kinetic", "strain", "external_work", "active_work", "min_J"})
+    EXPECT_EQ(summary_number(dir / "whole" / "summary.json", key), summary_number(dir / "split" / "summary.json", key))
+        << key;
+  EXPECT_EQ(summary_number(dir / "whole" / "summary.json", "steps"), 40);
+
+  const auto fa = last_frame(dir / "whole"), fb = last_frame(dir / "split");
+  ASSERT_EQ(fa.points.size(), fb.points.size());
+  for (std::size_t i = 0; i < fa.points.size(); ++i) ASSERT_EQ(fa.points[i], fb.points[i]) << "point " << i;
+  ASSERT_TRUE(fa.point_fields.count("director"));
+  for (const auto& [name, field] : fa.point_fields) EXPECT_EQ(field.values, fb.point_fields.at(name).values) << name;
+  fs::remove_all(dir);
+}
+
+// The stable step of the scene's initial state, from a world built the same way.
+double initial_stable_dt(const std::string& toml) {
+  auto sw = testing::build_from_text(toml);
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  return integrator.stable_dt();
+}
+
+const std::string kBlock = R"([scene]
+name = "block"
+[integrator]
+t_end = {t_end}
+dt = {dt}
+[output]
+every = {every}
+[[body]]
+name = "cube"
+[body.cloud]
+generator = "block"
+size = [1e-5, 1e-5, 1e-5]
+cells = [3, 3, 3]
+[body.material]
+model = "mooney_rivlin"
+c1 = 400
+lambda = 4000
+[body.initial]
+random_velocity = 1e-2
+[[body.boundary]]
+surface = "zmin"
+)";
+
+std::string block_scene(double t_end, double dt, double every) {
+  auto fmt = [](double x) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%.17g", x);
+    return std::string(s);
+  };
+  return with(with(with(kBlock, "t_end", fmt(t_end)), "dt", fmt(dt)), "every", fmt(every));
+}
+
+TEST(BlowUp, ForcedUnstableStepStopsWithDiagnosisAndKeepsTheLastGoodFrame) {
+  testing::ScopedThreads one(1);
+  const double stable = initial_stable_dt(block_scene(1.0, 0.0, 1.0));
+  const double dt = 4.0 * stable;
+  const fs::path dir = testing::fresh_dir("blowup");
+  write_text(dir / "blowup.toml", block_scene(1e4 * dt, dt, dt));
+  const RunResult r = run_file(dir / "blowup.toml", dir / "out", 0, {}, true);
+  std::printf("dt = 4 x stable (%.4g s): exit code %d; log:\n%s", stable, r.code, r.log.c_str());
+  ASSERT_EQ(r.code, kUnstable);
+
+  // The diagnosis names the step, time, body, particle and the quantity that failed.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.log, m, std::regex(R"(unstable at step (\d+) \(t = ([0-9.eE+-]+) s)"))) << r.log;
+  const long step = std::stol(m[1].str());
+  EXPECT_NE(r.log.find("body 'cube'"), std::string::npos);
+  EXPECT_TRUE(std::regex_search(r.log, std::regex(R"(particle \d+ )")));
+  EXPECT_TRUE(std::regex_search(r.log, std::regex("not finite|inverted|left the domain")));
+  EXPECT_NE(r.log.find("the last good frame is kept"), std::string::npos);
+  const fs::path summary = dir / "out" / "summary.json";
+  EXPECT_EQ(summary_number(summary, "steps"), step);
+  EXPECT_NE(read_text(summary).find("\"status\": \"unstable\""), std::string::npos);
+
+  // Every listed frame reads back through VTK with finite values, and the series ends
+  // at the last step before the failure (a frame is written after every step).
+  const auto entries = io::read_pvd(dir / "out" / "frames.pvd");
+  ASSERT_GE(entries.size(), 2u);
+  for (const auto& e : entries) {
+    const auto frame = io::test::read_vtu_back(dir / "out" / e.file);
+    for (const auto& p : frame.points) ASSERT_TRUE(p.allFinite()) << e.file;
+    for (const auto& [name, field] : frame.point_fields)
+      for (double v : field.values) ASSERT_TRUE(std::isfinite(v)) << e.file << " " << name;
+  }
+  const double failed_at = summary_number(summary, "simulated_time");
+  std::printf("blow-up at step %ld, t = %.6g s; %zu frames listed, the last at t = %.6g s\n", step, failed_at,
+              entries.size(), entries.back().time);
+  EXPECT_LT(entries.back().time, failed_at);
+  EXPECT_GT(entries.back().time, failed_at - 1.5 * dt);
+  fs::remove_all(dir);
+}
+
+TEST(StepClamping, UserStepAboveTheStableStepIsClampedWithAWarning) {
+  testing::ScopedThreads one(1);
+  const double stable = initial_stable_dt(block_scene(1.0, 0.0, 1.0));
+  const double requested = 10.0 * stable;
+  const fs::path dir = testing::fresh_dir("clamp");
+  write_text(dir / "clamp.toml", block_scene(20.0 * requested, requested, 20.0 * requested));
+  const RunResult r = run_file(dir / "clamp.toml", dir / "out", 0);
+  std::printf("requested dt %.4g s = 10 x stable: exit code %d; log:\n%s", requested, r.code, r.log.c_str());
+  ASSERT_EQ(r.code, kSuccess);
+  EXPECT_TRUE(std::regex_search(r.log, std::regex(R"(warning: \[integrator\] dt = \S+ s exceeds the stable step)")));
+  const double used = summary_number(dir / "out" / "summary.json", "dt");
+  const double stable_end = summary_number(dir / "out" / "summary.json", "stable_dt");
+  EXPECT_LE(used, 0.5 * stable_end * (1.0 + 1e-12));  // the default dt_safety
+  EXPECT_LT(used, 0.1 * requested);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rkpm::sim
