@@ -272,8 +272,10 @@ std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body
       throw SetupError(fmt::format("{}:{}: [body.material] zeta_layer = \"{}\": expected \"all\" for a cloud "
                                    "without inner and outer surfaces (a shell has them)",
                                    m.file(), m.line("zeta_layer"), layer));
-    const auto side = wall_side(body.cloud, layer);
-    for (std::size_t i = 0; i < n; ++i) activity[i] *= side[i];
+    // bending: +zeta in the inner half, -zeta in the outer half: a pure bending moment
+    // (one half grows in-plane as much as the other shrinks), no net change of area.
+    const auto side = wall_side(body.cloud, layer == "bending" ? "inner" : layer);
+    for (std::size_t i = 0; i < n; ++i) activity[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
   }
   return activity;
 }

@@ -51,8 +51,8 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 }  // namespace
 
 Contact::Contact(Body& a, Body& b, const ContactSettings& s)
-    : a_(a), b_(b), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), pairs_(s.cutoff, s.skin), law_(s.law),
-      substrate_(s.substrate) {
+    : a_(a), b_(b), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
+      pairs_(s.cutoff, s.skin), law_(s.law), substrate_(s.substrate) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
   molecules_[1] = molecules_of(b, s.beta[1]);
@@ -99,10 +99,10 @@ void Contact::add_forces(World&) {
         continue;
       }
       ++active;
-      const double r = std::sqrt(r2);
       const double c = na[i] * nb[j];
-      e += c * lj_.energy(r);
-      pair_force_[k] = (-c * lj_.derivative(r) / r) * rij;  // on A's particle: -d(c phi)/dx_I
+      double slope_over_r = 0.0;
+      e += c * (lj_.energy_and_slope(r2, slope_over_r) - energy_shift_);
+      pair_force_[k] = (-c * slope_over_r) * rij;  // on A's particle: -d(c phi)/dx_I
       fi += pair_force_[k];
     }
     row_energy_[i] = e;

@@ -5,9 +5,26 @@ namespace rkpm::sim {
 
 namespace {
 double activity_factor(const LCEMaterial& m, Index L) { return m.activity.empty() ? 1.0 : m.activity[L]; }
+
+// Passive energy sum_L V_L W(F_L, h_L) at the current F and Grad h (the latter as last
+// computed by the force loop).
+double director_energy(const Body& body, const materials::LiquidCrystalElastomer& model) {
+  const DirectorField& dir = *body.director;
+  const auto n = static_cast<Index>(body.size());
+  double total = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : total)
+  for (Index L = 0; L < n; ++L) {
+    materials::DirectorPoint p;
+    p.h = dir.h[L];
+    p.h0 = dir.h0[L];
+    p.grad_h = dir.frank ? dir.grad_h[L] : Mat3::Zero();
+    total += body.gradient.weight[L] * model.energy(body.F[L], p);
+  }
+  return total;
+}
 }  // namespace
 
-double advance_director(Body& body, double dt) {
+DirectorStep advance_director(Body& body, double dt) {
   const auto& material = std::get<LCEMaterial>(body.material);
   const auto& model = material.model;
   DirectorField& dir = *body.director;
@@ -16,11 +33,15 @@ double advance_director(Body& body, double dt) {
   // dF/dt = sum_I v_I (x) b_I: the smoothed velocity gradient in the reference frame.
   rk::deformation_gradients(body.gradient, body.v, dir.F_rate);
 
-  double active = 0.0;
+  DirectorStep result;
+  const double energy_before = director_energy(body, model);
+  double& active = result.active_power;
   if (model.zeta != 0.0) {
 #pragma omp parallel for schedule(static) reduction(+ : active)
     for (Index L = 0; L < n; ++L)
-      active += body.gradient.weight[L] * activity_factor(material, L) *
+      // The active stress is part of the internal force -sum_L V_L P_L b_I, so it puts
+      // energy in at the rate -sum_L V_L P_a : dF/dt.
+      active -= body.gradient.weight[L] * activity_factor(material, L) *
                 (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
   }
 
@@ -53,7 +74,8 @@ double advance_director(Body& body, double dt) {
       h = h.dot(nrm) >= 0.0 ? nrm : Vec3(-nrm);
     }
   }
-  return active;
+  result.energy_change = director_energy(body, model) - energy_before;
+  return result;
 }
 
 }  // namespace rkpm::sim

@@ -20,7 +20,8 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
     : out_(path, resume ? std::ios::app : std::ios::trunc), shape_body_(shape_body) {
   if (!out_) throw std::runtime_error("cannot write " + path.string());
   if (resume) return;
-  out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,dissipated,energy_error,residual,min_J";
+  out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,director_work,dissipated,energy_error,residual,"
+          "min_J";
   for (const auto& t : world.terms)
     if (dynamic_cast<const VolumeConstraint*>(t.get())) out_ << ",enclosed_volume_ratio,enclosed_pressure";
   if (shape_body_) out_ << ",volume,area,reduced_volume";
@@ -29,9 +30,9 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
 
 void History::record(const World& world, Integrator& integrator) {
   const auto& e = integrator.measure_energy();
-  out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}", world.step,
-                      world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
-                      e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
+  out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
+                      world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
+                      e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
   for (const auto& t : world.terms)
     if (const auto* vc = dynamic_cast<const VolumeConstraint*>(t.get()))
       out_ << fmt::format(",{:.10g},{:.6g}", vc->volume() / vc->initial_volume(), vc->pressure());

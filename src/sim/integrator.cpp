@@ -28,9 +28,9 @@ constexpr double kFireIncrease = 1.1, kFireDecrease = 0.5, kFireAlphaStart = 0.1
 }  // namespace
 
 double EnergyLedger::relative_error() const {
-  const double balance = total() - (initial + external + active - dissipated);
+  const double balance = total() - (initial + external + active + director - dissipated);
   const double scale = std::max({std::abs(initial), std::abs(kinetic), std::abs(strain), std::abs(interface),
-                                 std::abs(external), std::abs(active), std::abs(dissipated),
+                                 std::abs(external), std::abs(active), std::abs(director), std::abs(dissipated),
                                  std::numeric_limits<double>::min()});
   return std::abs(balance) / scale;
 }
@@ -158,7 +158,12 @@ void Integrator::step() {
 
   active_power_ = 0.0;
   for (auto& bp : world_.bodies)
-    if (bp->director) active_power_ += advance_director(*bp, h);
+    if (bp->director) {
+      const DirectorStep d = advance_director(*bp, h);
+      active_power_ += d.active_power;
+      // The director moves at fixed positions: the stored energy it changes is booked apart.
+      ledger_.director += d.energy_change;
+    }
   term_power_ = power_of_terms();
 
   ledger_.external += 0.5 * h * (old_term_power + term_power_) + h * support_power_;
@@ -295,6 +300,7 @@ std::vector<double> Integrator::save_state() const {
           ledger_.active,
           ledger_.dissipated,
           ledger_.initial,
+          ledger_.director,
           term_power_,
           active_power_,
           support_power_,
@@ -308,21 +314,22 @@ std::vector<double> Integrator::save_state() const {
 }
 
 void Integrator::load_state(const std::vector<double>& s) {
-  if (s.size() != 16) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
+  if (s.size() != 17) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
   dt_ = s[0];
   stable_dt_ = s[1];
   ledger_.external = s[2];
   ledger_.active = s[3];
   ledger_.dissipated = s[4];
   ledger_.initial = s[5];
-  term_power_ = s[6];
-  active_power_ = s[7];
-  support_power_ = s[8];
-  fire_alpha_ = s[9];
-  fire_positive_steps_ = static_cast<std::int64_t>(s[10]);
-  settings_.domain_size = s[11];
-  centre_ = Vec3(s[12], s[13], s[14]);
-  dt_clamped_ = s[15] != 0.0;
+  ledger_.director = s[6];
+  term_power_ = s[7];
+  active_power_ = s[8];
+  support_power_ = s[9];
+  fire_alpha_ = s[10];
+  fire_positive_steps_ = static_cast<std::int64_t>(s[11]);
+  settings_.domain_size = s[12];
+  centre_ = Vec3(s[13], s[14], s[15]);
+  dt_clamped_ = s[16] != 0.0;
 }
 
 }  // namespace rkpm::sim

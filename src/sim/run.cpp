@@ -29,6 +29,7 @@ io::Json energy_json(const EnergyLedger& e) {
   j.set("interface", e.interface);
   j.set("external_work", e.external);
   j.set("active_work", e.active);
+  j.set("director_work", e.director);
   j.set("dissipated", e.dissipated);
   j.set("initial", e.initial);
   j.set("relative_error", e.relative_error());

@@ -51,7 +51,9 @@ TEST(ContactPairs, BuildFindsExactlyTheBruteForcePairsAndTheTransposeMatches) {
   for (Index i = 0; i < 400; ++i)
     for (Index k = pairs.row_offset()[i]; k < pairs.row_offset()[i + 1]; ++k) {
       listed.emplace(i, pairs.partner()[k]);
-      if (k > pairs.row_offset()[i]) EXPECT_LT(pairs.partner()[k - 1], pairs.partner()[k]);  // sorted rows
+      if (k > pairs.row_offset()[i]) {
+        EXPECT_LT(pairs.partner()[k - 1], pairs.partner()[k]);  // sorted rows
+      }
     }
   std::printf("build: %zu listed pairs, brute force %zu\n", listed.size(), expected.size());
   ASSERT_GT(expected.size(), 1000u);
@@ -62,7 +64,9 @@ TEST(ContactPairs, BuildFindsExactlyTheBruteForcePairsAndTheTransposeMatches) {
     for (Index k = pairs.column_offset()[j]; k < pairs.column_offset()[j + 1]; ++k) {
       const Index e = pairs.column_entry()[k];
       EXPECT_EQ(pairs.partner()[e], j);
-      if (k > pairs.column_offset()[j]) EXPECT_LT(pairs.entry_row()[pairs.column_entry()[k - 1]], pairs.entry_row()[e]);
+      if (k > pairs.column_offset()[j]) {
+        EXPECT_LT(pairs.entry_row()[pairs.column_entry()[k - 1]], pairs.entry_row()[e]);
+      }
       ++seen;
     }
   EXPECT_EQ(seen, pairs.size());

@@ -104,9 +104,13 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
 
 // Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
 // of Eq. 7 with the current velocity gradient, renormalisation to unit length, and
-// h = current outward normal on the surface when anchored). Also returns the work
-// rate of the active stress (Eq. 1), sum_L V_L P_a : dF/dt [W]. LCE bodies only.
-double advance_director(Body& body, double dt);
+// h = current outward normal on the surface when anchored). LCE bodies only.
+struct DirectorStep {
+  double active_power = 0.0;   // work rate of the active stress (Eq. 1), -sum_L V_L P_a : dF/dt [W]
+  double energy_change = 0.0;  // change of the stored energy by the director update at fixed F [J]:
+                               // relaxation dissipates it, the anchoring (Eq. 8) may add to it
+};
+DirectorStep advance_director(Body& body, double dt);
 
 // Largest stable time step of the body's material: safety * min_I spacing_I / c_I.
 double material_stable_dt(const Body& body);

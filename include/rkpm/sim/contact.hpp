@@ -5,7 +5,7 @@
 // beta are molecules per CURRENT volume, so beta dv = beta0 dV is conserved: particle I
 // carries the fixed number of molecules n_I = beta0 V_I (V_I its reference volume).
 // Nodal quadrature of both integrals gives the pair sum
-//     Pi_AC = sum_{I in A} sum_{J in B, r_IJ < cutoff} n_I n_J w_J phi(r_IJ),
+//     Pi_AC = sum_{I in A} sum_{J in B, r_IJ < cutoff} n_I n_J w_J [phi(r_IJ) - phi(cutoff)],
 //     r_IJ = |x_I - x_J|,  x = X + d (the generalized positions, see body.hpp),
 // with w_J = 1, or the substrate's local stiffness ratio under the `linear` stiffness
 // law (the seed: "eps ... is dependent on substrate elasticity"):
@@ -15,9 +15,13 @@
 //     f_I = -sum_J n_I n_J w_J phi'(r) (x_I - x_J)/r,   f_J = -(same pair term),
 // so each pair's forces are equal and opposite (linear momentum is conserved) and
 // the term is conservative (its energy is reported to the ledger).
-// Pairs come from a Verlet list with a skin (contact_pairs.hpp). The hard cutoff
-// truncates the r^-6 tail; docs/contact.md gives the resulting error of the
-// half-space traction law.
+// The potential is truncated and shifted: subtracting phi(cutoff) leaves every force
+// unchanged and makes the energy continuous when a pair crosses the cutoff, so the
+// stored energy stays consistent with the work of the forces (an unshifted energy
+// jumps by n n w phi(cutoff) at every crossing). The forces are those of the
+// truncated potential; docs/contact.md gives the resulting half-space traction law
+// and its deviation from the untruncated one.
+// Pairs come from a Verlet list with a skin (contact_pairs.hpp).
 #pragma once
 
 #include "rkpm/sim/contact_pairs.hpp"
@@ -37,6 +41,14 @@ struct LennardJones {
   // Largest eigenvalue magnitude of the pair Hessian d^2 phi / dx dx:
   // max(|phi''(r)|, |phi'(r)| / r) (along and across the bond).
   double stiffness(double r) const;
+  // Both at once from the squared distance, without roots or pow (the force loop):
+  // returns phi(r) and sets derivative_over_r = phi'(r) / r.
+  double energy_and_slope(double r2, double& derivative_over_r) const {
+    const double inv_r2 = 1.0 / r2;
+    const double u2 = s0 * s0 * inv_r2, u6 = u2 * u2 * u2;
+    derivative_over_r = eps * 12.0 * (u6 - u6 * u6) * inv_r2;
+    return eps * (u6 * u6 - 2.0 * u6);
+  }
 };
 
 enum class StiffnessLaw { none, linear };
@@ -79,6 +91,7 @@ class Contact final : public Term {
   Body& b_;
   LennardJones lj_;
   double cutoff_;
+  double energy_shift_;  // phi(cutoff)
   ContactPairs pairs_;
   std::array<std::vector<double>, 2> molecules_;
   std::array<std::vector<Vec3>, 2> force_;

@@ -25,18 +25,22 @@ struct IntegratorSettings {
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
 };
 
-// Energy bookkeeping [J]. Balance: kinetic + stored = initial + external + active - dissipated.
+// Energy bookkeeping [J].
+// Balance: kinetic + stored = initial + external + active + director - dissipated.
 struct EnergyLedger {
   double kinetic = 0.0;
   double strain = 0.0;       // sum of the bodies' stored energy
   double interface = 0.0;    // energy stored by conservative terms (contact, surface, constraints)
   double external = 0.0;     // work done by loads and moving supports
   double active = 0.0;       // work done by the active stress (Eq. 1)
+  double director = 0.0;     // stored energy changed by director updates at fixed F (Eq. 5-8):
+                             // negative by the Allen-Cahn relaxation; the co-rotational part of
+                             // Eq. 7 and the anchoring of Eq. 8 exchange energy either way
   double dissipated = 0.0;   // removed by damping and by FIRE velocity resets
   double initial = 0.0;      // kinetic + stored at the start
 
   double total() const { return kinetic + strain + interface; }
-  // |total - (initial + external + active - dissipated)| relative to the largest energy involved.
+  // |total - (initial + external + active + director - dissipated)| relative to the largest energy involved.
   double relative_error() const;
 };
 

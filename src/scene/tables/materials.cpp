@@ -77,10 +77,11 @@ ParamTable lce() {
       ParamSpec::real("zeta_power", "-").at_least(0.5).at_most(64).defaults(2.0)
           .help("Exponent p of the axial / equatorial activity profile; larger p confines the activity to "
                 "where h0 is closer to (axial) or further from (equatorial) the axis."),
-      ParamSpec::choice("zeta_layer", {"all", "inner", "outer"}).defaults(std::string("all"))
+      ParamSpec::choice("zeta_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
           .help("Through-the-wall profile of the activity in a shell: all = the whole wall; inner / outer = "
-                "only the half of the wall nearer that surface. Activity in one half bends the wall like a "
-                "bimetal strip (a spontaneous curvature)."),
+                "only the half of the wall nearer that surface, which bends the wall like a bimetal strip; "
+                "bending = zeta in the inner half and -zeta in the outer half, a pure bending moment "
+                "(spontaneous curvature) with no net change of the wall's area."),
       ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
           .help("Axis a of the axial activity profile (normalised; must be non-zero)."),
   };
