@@ -12,7 +12,9 @@ namespace rkpm::io {
 
 Progress::Progress(std::ostream& out, bool is_terminal) : out_(out), terminal_(is_terminal) {}
 
-void Progress::update(std::int64_t step, double time, double t_end, double dt, double wall_elapsed) {
+void Progress::update(std::int64_t step, double time, double t_end, double dt, double wall_elapsed,
+                      const std::string& detail) {
+  detail_ = detail;
   if (!started_) {
     time0_ = time;
     wall0_ = wall_elapsed;
@@ -49,9 +51,14 @@ double Progress::eta_seconds() const {
 }
 
 std::string Progress::line() const {
+  const std::string detail = detail_.empty() ? std::string() : "  " + detail_;
+  if (!(t_end_ > 0.0)) {
+    // Open-ended (a relaxation): no end time, so no percentage and no ETA.
+    return fmt::format("step {}  t = {:.4e} s  dt = {:.3e} s{}", step_, time_, dt_, detail);
+  }
   const double eta = eta_seconds();
-  return fmt::format("step {}  t = {:.4e} / {:.4e} s  ({:5.1f} %)  dt = {:.3e} s  ETA {}", step_, time_, t_end_,
-                     percent(), dt_, eta < 0.0 ? std::string("--") : format_duration(eta));
+  return fmt::format("step {}  t = {:.4e} / {:.4e} s  ({:5.1f} %)  dt = {:.3e} s  ETA {}{}", step_, time_, t_end_,
+                     percent(), dt_, eta < 0.0 ? std::string("--") : format_duration(eta), detail);
 }
 
 void Progress::print() {

@@ -126,7 +126,11 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       }
       if (checkpoint_every > 0 && world->step % checkpoint_every == 0)
         write_checkpoint(checkpoint_path, *world, integrator, clock, digest);
-      if (!options.quiet) progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed());
+      if (!options.quiet)
+        progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
+                        relax ? fmt::format("residual {:.2e} (target {:.0e})", integrator.residual(),
+                                            settings.relax_force_tol)
+                              : std::string());
     }
     // The final state is always in the series.
     if (series->entries().empty() || series->entries().back().time < world->time) write_frame();

@@ -98,3 +98,14 @@ TEST(Progress, DurationsAreReadable) {
 
 }  // namespace
 }  // namespace rkpm::io
+
+TEST(Progress, OpenEndedRunShowsItsDetailInsteadOfPercentAndEta) {
+  std::ostringstream out;
+  rkpm::io::Progress p(out, false);
+  p.update(12, 3e-7, 0.0, 2.5e-9, 1.0, "residual 3.10e-03 (target 1e-04)");
+  const std::string line = p.line();
+  EXPECT_NE(line.find("step 12"), std::string::npos) << line;
+  EXPECT_NE(line.find("residual 3.10e-03 (target 1e-04)"), std::string::npos) << line;
+  EXPECT_EQ(line.find('%'), std::string::npos) << line;
+  EXPECT_EQ(line.find("ETA"), std::string::npos) << line;
+}

@@ -25,7 +25,10 @@ class Progress {
 
   // Reports the state after `step`: simulated `time` of `t_end`, current
   // time step `dt`, and `wall_elapsed` seconds since the run started.
-  void update(std::int64_t step, double time, double t_end, double dt, double wall_elapsed);
+  // t_end <= 0 marks an open-ended run (a relaxation): no percentage, no ETA. `detail`
+  // is appended to the line (e.g. the relaxation residual).
+  void update(std::int64_t step, double time, double t_end, double dt, double wall_elapsed,
+              const std::string& detail = "");
   // Prints the last state if it was not shown yet and ends the line. Idempotent.
   void finish();
 
@@ -46,6 +49,7 @@ class Progress {
   std::size_t last_width_ = 0;
   // Latest state.
   std::int64_t step_ = 0;
+  std::string detail_;
   double time_ = 0.0, t_end_ = 0.0, dt_ = 0.0, wall_ = 0.0;
   // First update, for the rate behind the ETA (a restarted run starts at t > 0).
   double time0_ = 0.0, wall0_ = 0.0;
