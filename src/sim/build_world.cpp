@@ -1,5 +1,7 @@
 #include "rkpm/sim/build.hpp"
 
+#include "rkpm/sim/activity_field.hpp"
+
 #include "rkpm/materials/graded_parameters.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
@@ -213,73 +215,6 @@ std::vector<ConstrainedComponent> constrained_components(const scene::BodySpec& 
   return out;
 }
 
-// Share of a particle's mass on the side of `surface` in a shell's wall: 1 nearer that
-// surface than the other one, 0 farther, 1/2 on the mid-surface (measured to the nearest
-// particle of each surface in the reference configuration).
-std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& surface) {
-  const std::string other = surface == "inner" ? "outer" : "inner";
-  const std::uint32_t near_bit = cloud.surface_bit(surface), far_bit = cloud.surface_bit(other);
-  std::vector<Vec3> near_points, far_points;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (cloud.surface_mask[i] & near_bit) near_points.push_back(cloud.X[i]);
-    if (cloud.surface_mask[i] & far_bit) far_points.push_back(cloud.X[i]);
-  }
-  const rk::NeighborSearch near_search(near_points), far_search(far_points);
-  std::vector<std::pair<Index, double>> found;
-  auto nearest2 = [&](const rk::NeighborSearch& search, const Vec3& x, double r) {
-    do {
-      search.query(x, r, found);
-      r *= 2.0;
-    } while (found.empty());
-    double best = found.front().second;
-    for (const auto& f : found) best = std::min(best, f.second);
-    return best;
-  };
-  std::vector<double> side(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const double start = 1e-3 * (cloud.X[i].norm() + 1e-30);
-    const double dn = nearest2(near_search, cloud.X[i], start), df = nearest2(far_search, cloud.X[i], start);
-    side[i] = std::abs(dn - df) <= 1e-12 * (dn + df) ? 0.5 : (dn < df ? 1.0 : 0.0);
-  }
-  return side;
-}
-
-// The activity field zeta_L / zeta of an LCE body (empty = uniform): an angular profile
-// around zeta_axis times a through-the-wall profile (zeta_layer).
-std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body) {
-  const auto& m = spec.material;
-  const std::string profile = m.choice("zeta_profile"), layer = m.choice("zeta_layer");
-  if (profile == "uniform" && layer == "all") return {};
-  const std::size_t n = body.size();
-  std::vector<double> activity(n, 1.0);
-  if (profile != "uniform") {
-    const Vec3 axis = m.vec3("zeta_axis");
-    if (!(axis.norm() > 0.0))
-      throw SetupError(fmt::format("{}:{}: [body.material] zeta_axis = [0, 0, 0]: expected a non-zero vector",
-                                   m.file(), m.line("zeta_axis")));
-    const bool axial = profile == "axial";
-    const double power = m.real("zeta_power");
-    for (std::size_t i = 0; i < n; ++i) {
-      // c = cos of the angle between the reference director and the axis.
-      const double c2 = std::min(1.0, std::pow(body.director->h0[i].dot(axis.normalized()), 2));
-      // axial: |c|^p, active where h0 is along the axis (a cell's flat faces);
-      // equatorial: (1 - c^2)^(p/2) = |sin|^p, active where h0 is perpendicular to it (its rim).
-      activity[i] = axial ? std::pow(c2, 0.5 * power) : std::pow(1.0 - c2, 0.5 * power);
-    }
-  }
-  if (layer != "all") {
-    if (body.cloud.surface_bit("inner") == 0u || body.cloud.surface_bit("outer") == 0u)
-      throw SetupError(fmt::format("{}:{}: [body.material] zeta_layer = \"{}\": expected \"all\" for a cloud "
-                                   "without inner and outer surfaces (a shell has them)",
-                                   m.file(), m.line("zeta_layer"), layer));
-    // bending: +zeta in the inner half, -zeta in the outer half: a pure bending moment
-    // (one half grows in-plane as much as the other shrinks), no net change of area.
-    const auto side = wall_side(body.cloud, layer == "bending" ? "inner" : layer);
-    for (std::size_t i = 0; i < n; ++i) activity[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
-  }
-  return activity;
-}
-
 std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed) {
   auto body = std::make_unique<Body>();
   body->name = spec.name();
@@ -336,7 +271,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   update_positions(*body);
 
   if (spec.director) body->director = make_director(spec, *body);
-  if (auto* lce = std::get_if<LCEMaterial>(&body->material)) lce->activity = activity_field(spec, *body);
+  if (auto* lce = std::get_if<LCEMaterial>(&body->material))
+    lce->activity = activity_field(spec, *body, lce->model.zeta);
   try {
     body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
   } catch (const std::runtime_error& e) {

@@ -69,11 +69,13 @@ ParamTable lce() {
       ParamSpec::real("zeta", "Pa").defaults(0.0)
           .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
                 "along h (contractile), zeta > 0 elongates it (extensile)."),
-      ParamSpec::choice("zeta_profile", {"uniform", "axial", "equatorial"}).defaults(std::string("uniform"))
+      ParamSpec::choice("zeta_profile", {"uniform", "axial", "equatorial", "radial"}).defaults(std::string("uniform"))
           .help("Spatial profile of the activity, with c = h0 . a the cosine between the reference director and "
                 "a = zeta_axis: uniform = zeta everywhere; axial = zeta |c|^p, full activity where h0 is along the "
                 "axis (a cell's flat faces), none where it is perpendicular (its rim); equatorial = zeta "
-                "(1 - c^2)^(p/2), the complement: active at the rim, passive in the faces (p = zeta_power)."),
+                "(1 - c^2)^(p/2), the complement: active at the rim, passive in the faces; radial = zeta (1 - rho^2)^p, "
+                "rho = distance of X from the axis through the centroid over the largest such distance: full "
+                "activity at the centre of a cell's faces, none at its rim (p = zeta_power)."),
       ParamSpec::real("zeta_power", "-").at_least(0.5).at_most(64).defaults(2.0)
           .help("Exponent p of the axial / equatorial activity profile; larger p confines the activity to "
                 "where h0 is closer to (axial) or further from (equatorial) the axis."),
@@ -82,6 +84,12 @@ ParamTable lce() {
                 "only the half of the wall nearer that surface, which bends the wall like a bimetal strip; "
                 "bending = zeta in the inner half and -zeta in the outer half, a pure bending moment "
                 "(spontaneous curvature) with no net change of the wall's area."),
+      ParamSpec::real("zeta_rim", "Pa").defaults(0.0)
+          .help("Activity added at a cell's rim, through the whole wall: zeta_rim |s|^q with s the sine of the "
+                "angle between h0 and zeta_axis (1 where the wall normal is perpendicular to the axis) and "
+                "q = zeta_rim_power. zeta_rim > 0 (extensile along the wall normal) shrinks the rim in-plane."),
+      ParamSpec::real("zeta_rim_power", "-").at_least(0.5).at_most(64).defaults(2.0)
+          .help("Exponent q of the rim activity profile |s|^q; larger q confines it to a narrower band."),
       ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
           .help("Axis a of the axial activity profile (normalised; must be non-zero)."),
   };

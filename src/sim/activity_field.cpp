@@ -1,0 +1,124 @@
+#include "rkpm/sim/activity_field.hpp"
+
+#include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/sim/build.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rkpm::sim {
+
+namespace {
+
+// Share of a particle's mass on the side of `surface` in a shell's wall: 1 nearer that
+// surface than the other one, 0 farther, 1/2 on the mid-surface (measured to the nearest
+// particle of each surface in the reference configuration).
+std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& surface) {
+  const std::string other = surface == "inner" ? "outer" : "inner";
+  const std::uint32_t near_bit = cloud.surface_bit(surface), far_bit = cloud.surface_bit(other);
+  std::vector<Vec3> near_points, far_points;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (cloud.surface_mask[i] & near_bit) near_points.push_back(cloud.X[i]);
+    if (cloud.surface_mask[i] & far_bit) far_points.push_back(cloud.X[i]);
+  }
+  const rk::NeighborSearch near_search(near_points), far_search(far_points);
+  std::vector<std::pair<Index, double>> found;
+  auto nearest2 = [&](const rk::NeighborSearch& search, const Vec3& x, double r) {
+    do {
+      search.query(x, r, found);
+      r *= 2.0;
+    } while (found.empty());
+    double best = found.front().second;
+    for (const auto& f : found) best = std::min(best, f.second);
+    return best;
+  };
+  std::vector<double> side(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const double start = 1e-3 * (cloud.X[i].norm() + 1e-30);
+    const double dn = nearest2(near_search, cloud.X[i], start), df = nearest2(far_search, cloud.X[i], start);
+    side[i] = std::abs(dn - df) <= 1e-12 * (dn + df) ? 0.5 : (dn < df ? 1.0 : 0.0);
+  }
+  return side;
+}
+
+// Distance of each reference position from the axis line through the volume centroid,
+// divided by the largest such distance (rho in [0, 1]).
+std::vector<double> relative_axis_distance(const particles::Cloud& cloud, const Vec3& axis) {
+  Vec3 centre = Vec3::Zero();
+  double volume = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    centre += cloud.volume[i] * cloud.X[i];
+    volume += cloud.volume[i];
+  }
+  centre /= volume;
+  std::vector<double> rho(cloud.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    const Vec3 r = cloud.X[i] - centre;
+    rho[i] = (r - r.dot(axis) * axis).norm();
+    largest = std::max(largest, rho[i]);
+  }
+  if (largest > 0.0)
+    for (auto& x : rho) x /= largest;
+  return rho;
+}
+
+}  // namespace
+
+// zeta_L = zeta w_face(X_L) w_layer(X_L) + zeta_rim w_rim(X_L):
+//   w_face  = 1 (uniform), |c|^p (axial), |s|^p (equatorial) or (1 - rho^2)^p (radial),
+//             c = h0 . a and s = sqrt(1 - c^2) for the reference director h0 and axis a;
+//   w_layer = 1 (all), the inner or outer half of a shell's wall, or +1 / -1 in the
+//             inner / outer half (bending);
+//   w_rim   = |s|^q: where the wall normal is perpendicular to the axis (a cell's rim),
+//             through the whole wall, q = zeta_rim_power.
+std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body, double& reference_zeta) {
+  const auto& m = spec.material;
+  const std::string profile = m.choice("zeta_profile"), layer = m.choice("zeta_layer");
+  const double zeta = m.real("zeta"), zeta_rim = m.real("zeta_rim");
+  reference_zeta = zeta != 0.0 ? zeta : zeta_rim;
+  if (profile == "uniform" && layer == "all" && zeta_rim == 0.0) return {};
+  if (reference_zeta == 0.0) return {};
+
+  const Vec3 axis_raw = m.vec3("zeta_axis");
+  if (!(axis_raw.norm() > 0.0))
+    throw SetupError(fmt::format("{}:{}: [body.material] zeta_axis = [0, 0, 0]: expected a non-zero vector",
+                                 m.file(), m.line("zeta_axis")));
+  const Vec3 axis = axis_raw.normalized();
+  const std::size_t n = body.size();
+  auto cos2 = [&](std::size_t i) { return std::min(1.0, std::pow(body.director->h0[i].dot(axis), 2)); };
+
+  std::vector<double> face(n, 1.0);
+  const double power = m.real("zeta_power");
+  if (profile == "radial") {
+    const auto rho = relative_axis_distance(body.cloud, axis);
+    for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(std::max(0.0, 1.0 - rho[i] * rho[i]), power);
+  } else if (profile == "axial") {
+    for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(cos2(i), 0.5 * power);
+  } else if (profile == "equatorial") {
+    for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(1.0 - cos2(i), 0.5 * power);
+  }
+
+  if (layer != "all") {
+    if (body.cloud.surface_bit("inner") == 0u || body.cloud.surface_bit("outer") == 0u)
+      throw SetupError(fmt::format("{}:{}: [body.material] zeta_layer = \"{}\": expected \"all\" for a cloud "
+                                   "without inner and outer surfaces (a shell has them)",
+                                   m.file(), m.line("zeta_layer"), layer));
+    // inner / outer: one half of the wall grows in-plane, the other does not: it bends like
+    // a bimetal strip. bending: the halves change area by opposite amounts, a pure moment.
+    const auto side = wall_side(body.cloud, layer == "bending" ? "inner" : layer);
+    for (std::size_t i = 0; i < n; ++i) face[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
+  }
+
+  std::vector<double> activity(n);
+  const double rim_power = m.real("zeta_rim_power");
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rim = zeta_rim != 0.0 ? std::pow(1.0 - cos2(i), 0.5 * rim_power) : 0.0;
+    activity[i] = (zeta * face[i] + zeta_rim * rim) / reference_zeta;
+  }
+  return activity;
+}
+
+}  // namespace rkpm::sim

@@ -1,0 +1,143 @@
+// The activity field of an active LCE shell (seed Eq. 1 with a spatially varying zeta):
+// each profile key of [body.material] gives the documented per-particle value.
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/build.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace {
+
+using rkpm::Vec3;
+
+std::string shell_scene(const std::string& activity_keys) {
+  return fmt::format(R"(
+[scene]
+name = "activity"
+[integrator]
+mode = "relax"
+[[body]]
+name = "cell"
+density = 1000.0
+[body.cloud]
+generator = "shell"
+semi_axes = [5e-6, 5e-6, 1.5e-6]
+thickness = 0.5e-6
+face_cells = 6
+layers = 3
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+{}
+[body.director]
+initial = "surface_normal"
+boundary = "normal"
+)",
+                     activity_keys);
+}
+
+// zeta_L of every particle: the reference amplitude times the relative field.
+std::vector<double> zeta_field(const rkpm::sim::Body& body) {
+  const auto& lce = std::get<rkpm::sim::LCEMaterial>(body.material);
+  std::vector<double> zeta(body.size(), lce.model.zeta);
+  for (std::size_t i = 0; i < lce.activity.size(); ++i) zeta[i] = lce.model.zeta * lce.activity[i];
+  return zeta;
+}
+
+TEST(ActivityField, RadialFaceProfilePlusRimBand) {
+  const auto world = rkpm::sim::build_world(rkpm::scene::parse_scene(
+      shell_scene("zeta = -8e3\nzeta_rim = 3e3\nzeta_rim_power = 4\nzeta_profile = \"radial\"\nzeta_power = 3"),
+      "activity.toml"));
+  const auto& body = *world->bodies.front();
+  const auto zeta = zeta_field(body);
+  // The shell is centred at the origin with its axis along z, so rho = |(X, Y)| / max.
+  double largest = 0.0;
+  for (const auto& X : body.cloud.X) largest = std::max(largest, std::hypot(X.x(), X.y()));
+  double worst = 0.0, centre = 0.0, rim = 0.0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const Vec3& X = body.cloud.X[i];
+    const double rho = std::hypot(X.x(), X.y()) / largest;
+    const double c = body.director->h0[i].z();
+    const double expected = -8e3 * std::pow(1.0 - rho * rho, 3.0) + 3e3 * std::pow(1.0 - c * c, 2.0);
+    worst = std::max(worst, std::abs(zeta[i] - expected));
+    if (rho < 0.1) centre = zeta[i];
+    if (rho > 0.999) rim = zeta[i];
+  }
+  EXPECT_LT(worst, 1e-9);
+  // Contractile at the centre of the faces, extensile on the equator.
+  EXPECT_LT(centre, -7e3);
+  EXPECT_GT(rim, 2.9e3);
+}
+
+TEST(ActivityField, InnerLayerConfinesTheFaceActivityButNotTheRim) {
+  const auto world = rkpm::sim::build_world(rkpm::scene::parse_scene(
+      shell_scene("zeta = -8e3\nzeta_rim = 3e3\nzeta_profile = \"axial\"\nzeta_layer = \"inner\""), "activity.toml"));
+  const auto& body = *world->bodies.front();
+  const auto zeta = zeta_field(body);
+  const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
+  int checked_outer = 0, checked_inner = 0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const double c = body.director->h0[i].z();
+    const double rim = 3e3 * (1.0 - c * c);
+    if (body.cloud.surface_mask[i] & outer) {  // outer half: the rim term only
+      EXPECT_NEAR(zeta[i], rim, 1e-9);
+      ++checked_outer;
+    } else if (body.cloud.surface_mask[i] & inner) {  // inner half: both
+      EXPECT_NEAR(zeta[i], -8e3 * std::pow(c * c, 1.0) + rim, 1e-9);
+      ++checked_inner;
+    }
+  }
+  EXPECT_GT(checked_outer, 50);
+  EXPECT_GT(checked_inner, 50);
+}
+
+TEST(ActivityField, RimActivityAloneUsesItAsTheReferenceAmplitude) {
+  const auto world = rkpm::sim::build_world(
+      rkpm::scene::parse_scene(shell_scene("zeta_rim = 2e3\nzeta_rim_power = 2"), "activity.toml"));
+  const auto& body = *world->bodies.front();
+  const auto zeta = zeta_field(body);
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const double c = body.director->h0[i].z();
+    EXPECT_NEAR(zeta[i], 2e3 * (1.0 - c * c), 1e-9);
+  }
+}
+
+TEST(ActivityField, LayerOnASolidBodyIsASetupErrorNamingTheKey) {
+  const std::string text = R"(
+[scene]
+name = "activity"
+[integrator]
+mode = "relax"
+[[body]]
+name = "ball"
+density = 1000.0
+[body.cloud]
+generator = "sphere"
+radius = 1e-6
+cells = 4
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+zeta = -1e3
+zeta_layer = "inner"
+[body.director]
+initial = "surface_normal"
+boundary = "normal"
+)";
+  try {
+    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
+    FAIL() << "expected a SetupError";
+  } catch (const rkpm::sim::SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("ball.toml"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("zeta_layer = \"inner\""), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
