@@ -65,6 +65,22 @@ std::vector<double> relative_axis_distance(const particles::Cloud& cloud, const 
   return rho;
 }
 
+// Multiplies a profile by the through-the-wall factor that the choice `key` names:
+// all = 1; inner / outer = the half of a shell's wall nearer that surface (that half grows
+// or shrinks in-plane, the other does not: the wall bends like a bimetal strip);
+// bending = +1 in the inner half and -1 in the outer half (a pure bending moment).
+void apply_layer(const particles::Cloud& cloud, const scene::ParamSet& m, const std::string& key,
+                 std::vector<double>& profile) {
+  const std::string layer = m.choice(key);
+  if (layer == "all") return;
+  if (cloud.surface_bit("inner") == 0u || cloud.surface_bit("outer") == 0u)
+    throw SetupError(fmt::format("{}:{}: [body.material] {} = \"{}\": expected \"all\" for a cloud "
+                                 "without inner and outer surfaces (a shell has them)",
+                                 m.file(), m.line(key), key, layer));
+  const auto side = wall_side(cloud, layer == "bending" ? "inner" : layer);
+  for (std::size_t i = 0; i < profile.size(); ++i) profile[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
+}
+
 }  // namespace
 
 // zeta_L = zeta w_face(X_L) w_layer(X_L) + zeta_rim w_rim(X_L):
@@ -73,13 +89,13 @@ std::vector<double> relative_axis_distance(const particles::Cloud& cloud, const 
 //   w_layer = 1 (all), the inner or outer half of a shell's wall, or +1 / -1 in the
 //             inner / outer half (bending);
 //   w_rim   = |s|^q: where the wall normal is perpendicular to the axis (a cell's rim),
-//             through the whole wall, q = zeta_rim_power.
+//             q = zeta_rim_power, times its own through-the-wall factor (zeta_rim_layer).
 std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body, double& reference_zeta) {
   const auto& m = spec.material;
-  const std::string profile = m.choice("zeta_profile"), layer = m.choice("zeta_layer");
+  const std::string profile = m.choice("zeta_profile");
   const double zeta = m.real("zeta"), zeta_rim = m.real("zeta_rim");
   reference_zeta = zeta != 0.0 ? zeta : zeta_rim;
-  if (profile == "uniform" && layer == "all" && zeta_rim == 0.0) return {};
+  if (profile == "uniform" && m.choice("zeta_layer") == "all" && zeta_rim == 0.0) return {};
   if (reference_zeta == 0.0) return {};
 
   const Vec3 axis_raw = m.vec3("zeta_axis");
@@ -101,23 +117,16 @@ std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body
     for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(1.0 - cos2(i), 0.5 * power);
   }
 
-  if (layer != "all") {
-    if (body.cloud.surface_bit("inner") == 0u || body.cloud.surface_bit("outer") == 0u)
-      throw SetupError(fmt::format("{}:{}: [body.material] zeta_layer = \"{}\": expected \"all\" for a cloud "
-                                   "without inner and outer surfaces (a shell has them)",
-                                   m.file(), m.line("zeta_layer"), layer));
-    // inner / outer: one half of the wall grows in-plane, the other does not: it bends like
-    // a bimetal strip. bending: the halves change area by opposite amounts, a pure moment.
-    const auto side = wall_side(body.cloud, layer == "bending" ? "inner" : layer);
-    for (std::size_t i = 0; i < n; ++i) face[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
+  std::vector<double> rim(n, 0.0);
+  if (zeta_rim != 0.0) {
+    const double rim_power = m.real("zeta_rim_power");
+    for (std::size_t i = 0; i < n; ++i) rim[i] = std::pow(1.0 - cos2(i), 0.5 * rim_power);
   }
+  apply_layer(body.cloud, m, "zeta_layer", face);
+  apply_layer(body.cloud, m, "zeta_rim_layer", rim);
 
   std::vector<double> activity(n);
-  const double rim_power = m.real("zeta_rim_power");
-  for (std::size_t i = 0; i < n; ++i) {
-    const double rim = zeta_rim != 0.0 ? std::pow(1.0 - cos2(i), 0.5 * rim_power) : 0.0;
-    activity[i] = (zeta * face[i] + zeta_rim * rim) / reference_zeta;
-  }
+  for (std::size_t i = 0; i < n; ++i) activity[i] = (zeta * face[i] + zeta_rim * rim[i]) / reference_zeta;
   return activity;
 }
 

@@ -97,6 +97,20 @@ TEST(ActivityField, InnerLayerConfinesTheFaceActivityButNotTheRim) {
   EXPECT_GT(checked_inner, 50);
 }
 
+TEST(ActivityField, RimBendingLayerHasOppositeSignsInTheTwoHalves) {
+  const auto world = rkpm::sim::build_world(rkpm::scene::parse_scene(
+      shell_scene("zeta_rim = 3e3\nzeta_rim_power = 1\nzeta_rim_layer = \"bending\""), "activity.toml"));
+  const auto& body = *world->bodies.front();
+  const auto zeta = zeta_field(body);
+  const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const double c = body.director->h0[i].z();
+    const double rim = 3e3 * std::sqrt(std::max(0.0, 1.0 - c * c));
+    if (body.cloud.surface_mask[i] & outer) EXPECT_NEAR(zeta[i], -rim, 1e-9);
+    if (body.cloud.surface_mask[i] & inner) EXPECT_NEAR(zeta[i], rim, 1e-9);
+  }
+}
+
 TEST(ActivityField, RimActivityAloneUsesItAsTheReferenceAmplitude) {
   const auto world = rkpm::sim::build_world(
       rkpm::scene::parse_scene(shell_scene("zeta_rim = 2e3\nzeta_rim_power = 2"), "activity.toml"));

@@ -87,9 +87,12 @@ ParamTable lce() {
       ParamSpec::real("zeta_rim", "Pa").defaults(0.0)
           .help("Activity added at a cell's rim, through the whole wall: zeta_rim |s|^q with s the sine of the "
                 "angle between h0 and zeta_axis (1 where the wall normal is perpendicular to the axis) and "
-                "q = zeta_rim_power. zeta_rim > 0 (extensile along the wall normal) shrinks the rim in-plane."),
+                "q = zeta_rim_power, through the part of the wall that zeta_rim_layer names. zeta_rim > 0 "
+                "(extensile along the wall normal) shrinks the rim in-plane."),
       ParamSpec::real("zeta_rim_power", "-").at_least(0.5).at_most(64).defaults(2.0)
           .help("Exponent q of the rim activity profile |s|^q; larger q confines it to a narrower band."),
+      ParamSpec::choice("zeta_rim_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
+          .help("Through-the-wall profile of the rim activity, as zeta_layer is for zeta."),
       ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
           .help("Axis a of the axial activity profile (normalised; must be non-zero)."),
   };
