@@ -2,6 +2,7 @@
 
 #include "rkpm/io/json.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -72,10 +73,69 @@ Contact::Contact(Body& a, Body& b, const ContactSettings& s)
   }
   force_[0].assign(a.size(), Vec3::Zero());
   force_[1].assign(b.size(), Vec3::Zero());
+  if (!s.report_surface.empty()) {
+    // Gaps are searched up to 4 cutoffs: beyond, the bodies do not interact anyway.
+    report_.emplace(a, b, s.report_surface, s.contact_gap > 0.0 ? s.contact_gap : s.s0, 4.0 * s.cutoff);
+  }
 }
 
+ContactSample Contact::sample() const {
+  const ContactSample s = report_->measure();  // physical positions of the present state
+  if (!first_sample_) {
+    first_sample_ = s;
+    smallest_gap_ = s.min_gap;
+  }
+  smallest_gap_ = std::min(smallest_gap_, s.min_gap);
+  last_sample_ = s;
+  return s;
+}
+
+namespace {
+
+// Physical positions p_J = X_J + sum_I Psi_I(X_J) d_I of every particle (X + d without RK operators).
+void all_physical_points(const Body& body, std::vector<Vec3>& p) {
+  const auto& N = body.interpolation;
+  const auto n = static_cast<Index>(body.size());
+  p.resize(body.size());
+  if (N.row_offset.empty()) {
+    p = body.x;
+    return;
+  }
+#pragma omp parallel for schedule(static)
+  for (Index J = 0; J < n; ++J) {
+    Vec3 u = Vec3::Zero();
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
+    p[J] = body.cloud.X[J] + u;
+  }
+}
+
+// Forces f_J on the physical points become generalized forces sum_J Psi_I(X_J) f_J,
+// gathered per particle I through the transpose (fixed order, no atomics).
+void add_generalized(Body& body, const std::vector<Vec3>& f) {
+  const auto& N = body.interpolation;
+  const auto n = static_cast<Index>(body.size());
+  if (N.row_offset.empty()) {
+    for (Index i = 0; i < n; ++i) body.force[i] += f[i];
+    return;
+  }
+  const auto& T = N.transpose;
+#pragma omp parallel for schedule(static)
+  for (Index I = 0; I < n; ++I) {
+    Vec3 s = Vec3::Zero();
+    for (Index e = T.offset[I]; e < T.offset[I + 1]; ++e) s += N.psi[T.entry[e]] * f[T.row[e]];
+    body.force[I] += s;
+  }
+}
+
+}  // namespace
+
 void Contact::add_forces(World&) {
-  pairs_.update(a_.x, b_.x);
+  const auto start = std::chrono::steady_clock::now();
+  all_physical_points(a_, points_[0]);
+  all_physical_points(b_, points_[1]);
+  const auto& pa = points_[0];
+  const auto& pb = points_[1];
+  pairs_.update(pa, pb);
   const auto& offset = pairs_.row_offset();
   const auto& partner = pairs_.partner();
   const auto& na = molecules_[0];
@@ -92,7 +152,7 @@ void Contact::add_forces(World&) {
     Vec3 fi = Vec3::Zero();
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
       const Index j = partner[k];
-      const Vec3 rij = a_.x[i] - b_.x[j];
+      const Vec3 rij = pa[i] - pb[j];
       const double r2 = rij.squaredNorm();
       if (r2 >= rc2) {
         pair_force_[k].setZero();
@@ -118,13 +178,15 @@ void Contact::add_forces(World&) {
     for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) fj -= pair_force_[col_entry[k]];
     force_[1][j] = fj;
   }
-  for (Index i = 0; i < rows; ++i) a_.force[i] += force_[0][i];
-  for (Index j = 0; j < cols; ++j) b_.force[j] += force_[1][j];
+  add_generalized(a_, force_[0]);
+  add_generalized(b_, force_[1]);
 
   double energy = 0.0;  // serial, in particle order: the same sum for any thread count
   for (double e : row_energy_) energy += e;
   energy_ = energy;
   active_pairs_ = active;
+  ++evaluations_;
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 double Contact::stable_dt(const World&) const {
@@ -142,7 +204,7 @@ double Contact::stable_dt(const World&) const {
     double g = 0.0;
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
       const Index j = partner[k];
-      const double r2 = (a_.x[i] - b_.x[j]).squaredNorm();
+      const double r2 = (points_[0][i] - points_[1][j]).squaredNorm();
       if (r2 >= rc2) continue;
       const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
       g += kij * (1.0 / a_.mass[i] + 1.0 / std::sqrt(a_.mass[i] * b_.mass[j]));
@@ -158,7 +220,7 @@ double Contact::stable_dt(const World&) const {
     double g = 0.0;
     for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) {
       const Index i = entry_row[col_entry[k]];
-      const double r2 = (a_.x[i] - b_.x[j]).squaredNorm();
+      const double r2 = (points_[0][i] - points_[1][j]).squaredNorm();
       if (r2 >= rc2) continue;
       const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
       g += kij * (1.0 / b_.mass[j] + 1.0 / std::sqrt(a_.mass[i] * b_.mass[j]));
@@ -183,6 +245,26 @@ void Contact::report(const World&, io::Json& summary) const {
   for (int k = 0; k < 3; ++k) force.push_back(total[k]);
   j.set("force_on_" + a_.name, force);
   if (law_ == StiffnessLaw::linear) j.set("stiffness_reference", mu_reference_);
+  j.set("force_evaluations", evaluations_);
+  j.set("seconds", seconds_);  // wall time of add_forces: compare with the run's wall_time
+  if (report_ && last_sample_) {
+    auto vec = [](const Vec3& v) {
+      io::Json a = io::Json::array();
+      for (int k = 0; k < 3; ++k) a.push_back(v[k]);
+      return a;
+    };
+    io::Json r = io::Json::object();
+    r.set("surface", report_->surface());
+    r.set("contact_gap", report_->contact_gap());
+    r.set("centroid_initial", vec(first_sample_->centroid));
+    r.set("centroid", vec(last_sample_->centroid));
+    r.set("drift", vec(last_sample_->centroid - first_sample_->centroid));
+    r.set("min_gap", last_sample_->min_gap);
+    r.set("min_gap_over_frames", smallest_gap_);
+    r.set("contact_radius", last_sample_->contact_radius);
+    r.set("contact_particles", last_sample_->contact_particles);
+    j.set("report", r);
+  }
   summary.set("contact " + a_.name + " " + b_.name, j);
 }
 

@@ -1,6 +1,7 @@
 #include "rkpm/sim/history.hpp"
 
 #include "rkpm/io/json.hpp"
+#include "rkpm/sim/contact.hpp"
 #include "rkpm/sim/volume_constraint.hpp"
 
 #include <fmt/format.h>
@@ -24,6 +25,9 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
           "min_J";
   for (const auto& t : world.terms)
     if (dynamic_cast<const VolumeConstraint*>(t.get())) out_ << ",enclosed_volume_ratio,enclosed_pressure";
+  for (const auto& t : world.terms)
+    if (const auto* c = dynamic_cast<const Contact*>(t.get()); c && c->has_report())
+      out_ << ",centroid_x,centroid_y,centroid_z,min_gap,contact_radius,contact_particles";
   if (shape_body_) out_ << ",volume,area,reduced_volume";
   out_ << "\n";
 }
@@ -36,6 +40,12 @@ void History::record(const World& world, Integrator& integrator) {
   for (const auto& t : world.terms)
     if (const auto* vc = dynamic_cast<const VolumeConstraint*>(t.get()))
       out_ << fmt::format(",{:.10g},{:.6g}", vc->volume() / vc->initial_volume(), vc->pressure());
+  for (const auto& t : world.terms)
+    if (const auto* c = dynamic_cast<const Contact*>(t.get()); c && c->has_report()) {
+      const ContactSample s = c->sample();
+      out_ << fmt::format(",{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{}", s.centroid.x(), s.centroid.y(), s.centroid.z(),
+                          s.min_gap, s.contact_radius, s.contact_particles);
+    }
   if (shape_body_) {
     double volume = 0.0, area = 0.0;
     surface_volume_area(shape_body_->cloud, physical_positions(*shape_body_), "outer", volume, area);

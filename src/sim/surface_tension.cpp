@@ -2,7 +2,9 @@
 
 #include "rkpm/io/json.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace rkpm::sim {
@@ -54,26 +56,80 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
   }
   if (faces_.empty())
     throw std::invalid_argument("surface_tension: surface '" + surface + "' of body '" + body.name + "' has no faces");
+  for (auto f : faces_)
+    for (int k = 0; k < cloud.boundary_faces[f].n_nodes; ++k) nodes_.push_back(cloud.boundary_faces[f].nodes[k]);
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  points_.assign(body.size(), Vec3::Zero());
+  gradient_.assign(body.size(), Vec3::Zero());
   initial_area_ = area_ = measure_area();
 }
 
+void SurfaceTension::update_points() const {
+  const auto& N = body_.interpolation;
+  const bool interpolate = !N.row_offset.empty();
+  for (Index J : nodes_) {
+    if (!interpolate) {
+      points_[J] = body_.x[J];
+      continue;
+    }
+    Vec3 u = Vec3::Zero();
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body_.d[N.col[k]];
+    points_[J] = body_.cloud.X[J] + u;
+  }
+}
+
 double SurfaceTension::measure_area() const {
+  update_points();
   double area = 0.0;
-  for (auto f : faces_) area += face_area(body_.cloud.boundary_faces[f], body_.x, nullptr);
+  for (auto f : faces_) area += face_area(body_.cloud.boundary_faces[f], points_, nullptr);
   return area;
 }
 
 void SurfaceTension::add_forces(World&) {
-  // Serial over faces: the scatter to the face nodes runs in a fixed order.
+  // Serial over faces and nodes: the scatters run in a fixed order.
+  update_points();
   const auto& faces = body_.cloud.boundary_faces;
+  for (Index J : nodes_) gradient_[J].setZero();
   double area = 0.0;
   for (auto f : faces_) {
     const auto& face = faces[f];
     Vec3 grad[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    area += face_area(face, body_.x, grad);
-    for (int k = 0; k < face.n_nodes; ++k) body_.force[face.nodes[k]] -= gamma_ * grad[k];
+    area += face_area(face, points_, grad);
+    for (int k = 0; k < face.n_nodes; ++k) gradient_[face.nodes[k]] += grad[k];
+  }
+  // f_I = -gamma sum_J Psi_I(X_J) dA/dp_J.
+  const auto& N = body_.interpolation;
+  for (Index J : nodes_) {
+    if (N.row_offset.empty()) {
+      body_.force[J] -= gamma_ * gradient_[J];
+      continue;
+    }
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body_.force[N.col[k]] -= (gamma_ * N.psi[k]) * gradient_[J];
   }
   area_ = area;
+}
+
+double SurfaceTension::stable_dt(const World&) const {
+  if (gamma_ == 0.0) return std::numeric_limits<double>::infinity();
+  update_points();
+  const auto& faces = body_.cloud.boundary_faces;
+  std::vector<double> row(body_.size(), 0.0);
+  for (auto f : faces_) {
+    const auto& face = faces[f];
+    double longest2 = 0.0;
+    for (int p = 0; p < face.n_nodes; ++p)
+      for (int q = p + 1; q < face.n_nodes; ++q)
+        longest2 = std::max(longest2, (points_[face.nodes[p]] - points_[face.nodes[q]]).squaredNorm());
+    const double area = face_area(face, points_, nullptr);
+    if (area <= 0.0) continue;  // a collapsed face: the blow-up check reports it
+    const double k = face.n_nodes * gamma_ * longest2 / area;
+    for (int p = 0; p < face.n_nodes; ++p) row[face.nodes[p]] += k;
+  }
+  double omega2 = 0.0;
+  for (std::size_t i = 0; i < row.size(); ++i)
+    if (row[i] > 0.0) omega2 = std::max(omega2, row[i] / body_.mass[i]);
+  return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 
 void SurfaceTension::report(const World&, io::Json& summary) const {

@@ -92,6 +92,8 @@ std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
     s.law = p.choice("stiffness_law") == "linear" ? StiffnessLaw::linear : StiffnessLaw::none;
     if (s.law == StiffnessLaw::linear) s.substrate = p.text("substrate") == names[0] ? 0 : 1;
     s.stiffness_reference = p.real("stiffness_reference");
+    s.report_surface = p.text("report_surface");
+    s.contact_gap = p.real("contact_gap");
     try {
       return std::make_unique<Contact>(*a, *b, s);
     } catch (const std::invalid_argument& e) {

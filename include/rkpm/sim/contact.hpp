@@ -6,15 +6,22 @@
 // carries the fixed number of molecules n_I = beta0 V_I (V_I its reference volume).
 // Nodal quadrature of both integrals gives the pair sum
 //     Pi_AC = sum_{I in A} sum_{J in B, r_IJ < cutoff} n_I n_J w_J [phi(r_IJ) - phi(cutoff)],
-//     r_IJ = |x_I - x_J|,  x = X + d (the generalized positions, see body.hpp),
+//     r_IJ = |p_I - p_J|,  p_J = X_J + sum_K Psi_K(X_J) d_K (the physical positions, body.hpp),
 // with w_J = 1, or the substrate's local stiffness ratio under the `linear` stiffness
 // law (the seed: "eps ... is dependent on substrate elasticity"):
 //     eps_J = eps w_J,  w_J = mu(X_J) / mu_ref,
 // mu the small-strain shear modulus of the substrate at particle J and mu_ref given or
-// the volume-weighted mean. The forces are the exact gradient of this sum:
-//     f_I = -sum_J n_I n_J w_J phi'(r) (x_I - x_J)/r,   f_J = -(same pair term),
-// so each pair's forces are equal and opposite (linear momentum is conserved) and
-// the term is conservative (its energy is reported to the ledger).
+// the volume-weighted mean. The forces on the physical points,
+//     f_I = -sum_J n_I n_J w_J phi'(r) (p_I - p_J)/r,   f_J = -(same pair term),
+// are equal and opposite per pair, and act on the generalized coordinates as
+// sum_J Psi_K(X_J) f_J: the exact gradient of the sum with respect to d (the RK
+// functions reproduce constants, so the total force and momentum balance are kept),
+// and the term is conservative (its energy is reported to the ledger).
+// Why physical positions: a force on the generalized positions X + d of boundary
+// particles also drives d away from the field it interpolates, a mode only the
+// stabilization (proportional to mu) resists; under adhesion the generalized
+// positions then stay apart while the physical surfaces interpenetrate.
+// Bodies without RK operators (tests) use p = X + d.
 // The potential is truncated and shifted: subtracting phi(cutoff) leaves every force
 // unchanged and makes the energy continuous when a pair crosses the cutoff, so the
 // stored energy stays consistent with the work of the forces (an unshifted energy
@@ -25,9 +32,12 @@
 #pragma once
 
 #include "rkpm/sim/contact_pairs.hpp"
+#include "rkpm/sim/contact_report.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace rkpm::sim {
@@ -62,6 +72,8 @@ struct ContactSettings {
   StiffnessLaw law = StiffnessLaw::none;
   int substrate = 1;                    // which body (0 or 1) carries the stiffness law
   double stiffness_reference = 0.0;     // mu_ref [Pa]; 0: volume-weighted mean over the substrate
+  std::string report_surface;           // surface of body B for the gap report (contact_report.hpp); empty: none
+  double contact_gap = 0.0;             // patch threshold of the report [m]; 0: s0
 };
 
 class Contact final : public Term {
@@ -84,7 +96,17 @@ class Contact final : public Term {
   const ContactPairs& pairs() const { return pairs_; }
   // Molecules of each particle, n_I w_I (index 0 = body A, 1 = body B).
   const std::vector<double>& molecules(int body) const { return molecules_[body]; }
+  // Forces on the physical points of each body (with RK operators, the generalized
+  // forces are sum_J Psi_I(X_J) of these).
   const std::vector<Vec3>& force_on(int body) const { return force_[body]; }
+
+  // The declared report (report_surface): measures the present state and keeps the
+  // first sample and the smallest gap over all samples for the summary. Null report:
+  // has_report() is false and sample() must not be called.
+  bool has_report() const { return report_.has_value(); }
+  ContactSample sample() const;
+  // Wall time spent in add_forces since construction [s] (the cost of the term).
+  double seconds() const { return seconds_; }
 
  private:
   Body& a_;
@@ -94,13 +116,19 @@ class Contact final : public Term {
   double energy_shift_;  // phi(cutoff)
   ContactPairs pairs_;
   std::array<std::vector<double>, 2> molecules_;
-  std::array<std::vector<Vec3>, 2> force_;
+  std::array<std::vector<Vec3>, 2> force_;   // on the physical points
+  std::array<std::vector<Vec3>, 2> points_;  // physical positions at the last evaluation
   std::vector<Vec3> pair_force_;    // on A's particle of each listed pair
   std::vector<double> row_energy_;  // per particle of A
   double energy_ = 0.0, mu_reference_ = 0.0;
   std::size_t active_pairs_ = 0;
   StiffnessLaw law_;
   int substrate_;
+  std::optional<ContactReport> report_;
+  mutable std::optional<ContactSample> first_sample_, last_sample_;
+  mutable double smallest_gap_ = 0.0;
+  std::size_t evaluations_ = 0;
+  double seconds_ = 0.0;
 };
 
 // Small-strain shear modulus of a body at particle i (Mooney-Rivlin: 2 (c1 + c2); LCE: mu).

@@ -3,15 +3,22 @@
 //
 // For an isotropic surface stress the surface weak form of Eq. 17 is the variation of
 // the energy E = gamma * A(x): the current area of the surface. A is measured on the
-// boundary faces of the cloud's mesh at the generalized positions x = X + d (body.hpp):
+// boundary faces of the cloud's mesh at the PHYSICAL positions of the face nodes,
+// p_J = X_J + u(X_J) = X_J + sum_I Psi_I(X_J) d_I (body.hpp):
 //   * a triangle (a, b, c): |(b - a) x (c - a)| / 2;
 //   * a quadrilateral (0, 1, 2, 3): the mean of its two triangulations,
 //     (A012 + A023 + A123 + A130) / 2 - symmetric in the nodes and exact when planar.
-// The force is the exact gradient, f_I = -gamma dA/dx_I, acting on the face nodes'
-// generalized coordinates: for a triangle dA/da = n x (c - b) / 2 with n the unit
-// normal (and cyclically). A is homogeneous of degree 2 in x, so at equilibrium the
-// discrete virial sum_L v_L tr(sigma_L) = -2 gamma A holds: the mean pressure inside
-// a body is 2 gamma A / (3 v), i.e. 2 gamma / R for a sphere (Young-Laplace).
+// The force is the exact gradient with respect to the generalized coordinates,
+// f_I = -gamma sum_J Psi_I(X_J) dA/dp_J: for a triangle dA/da = n x (c - b) / 2 with
+// n the unit normal (and cyclically). Why the physical positions: the tension pulls
+// every surface node inwards; applied to the generalized positions X + d it also
+// drives the boundary nodes' d away from the field they interpolate, a mode only the
+// stabilization (proportional to mu) resists, and a body soft against gamma / R
+// (a drop, a cube becoming a sphere) lets its faceted surface collapse inwards while
+// its volume stays. On the physical surface the energy depends on the field alone.
+// A is homogeneous of degree 2 in the positions, so at equilibrium the mean pressure
+// inside a body is about 2 gamma A / (3 v), i.e. 2 gamma / R for a sphere (Young-Laplace).
+// Bodies built without RK operators (tests) use p = X + d.
 #pragma once
 
 #include "rkpm/sim/world.hpp"
@@ -34,6 +41,14 @@ class SurfaceTension final : public Term {
   std::string name() const override { return "surface_tension"; }
   void add_forces(World& world) override;
   double stored_energy(const World&) const override { return gamma_ * area_; }
+  // Critical step of the tension's stiffness. Moving a node of a face by delta out of
+  // its plane changes the area by delta^2 e^2 / (8 A) (e the opposite edge), so a
+  // face's Hessian blocks are bounded by k_f = gamma D_f^2 / A_f, D_f its longest node
+  // distance (a quadrilateral's diagonal); Gershgorin over the n_f nodes of each face:
+  // omega^2 <= max_I sum_{f at I} n_f k_f / m_I, dt = 2 / omega. It is conservative by
+  // about 4 on a flat square grid; it matters when the tension is stiff against the
+  // material (soft bodies, drops).
+  double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
 
   double area() const { return area_; }                  // at the last force evaluation [m^2]
@@ -42,9 +57,15 @@ class SurfaceTension final : public Term {
   double measure_area() const;
 
  private:
+  // Physical positions of the face nodes (entries of other particles are untouched).
+  void update_points() const;
+
   Body& body_;
   std::string surface_;
   std::vector<std::int32_t> faces_;  // indices into cloud.boundary_faces
+  std::vector<Index> nodes_;         // particles on those faces, increasing
+  mutable std::vector<Vec3> points_; // physical positions, indexed by particle
+  std::vector<Vec3> gradient_;       // dA/dp at the face nodes, indexed by particle
   double gamma_;
   double area_ = 0.0, initial_area_ = 0.0;
 };

@@ -49,6 +49,12 @@ ParamTable contact() {
           .help("The body (one of `bodies`) whose local shear modulus scales eps."),
       ParamSpec::real("stiffness_reference", "Pa").at_least(0).defaults(0.0)
           .help("mu_ref of the linear stiffness law; 0 = the volume-weighted mean shear modulus of the substrate."),
+      ParamSpec::text("report_surface").defaults(std::string(""))
+          .help("A surface of the second body (e.g. \"zmax\" of a block substrate): adds to history.csv and "
+                "summary.json the first body's centroid, its smallest gap to that surface (negative = "
+                "interpenetration) and the contact radius. Empty = no report."),
+      ParamSpec::real("contact_gap", "m").at_least(0).defaults(0.0)
+          .help("Report: particles of the first body closer than this to the surface form the contact patch; 0 = s0."),
   };
   t.finish = finish_contact;
   return t;

@@ -1,0 +1,140 @@
+#include "rkpm/sim/contact_report.hpp"
+
+#include "rkpm/rk/neighbor_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out) {
+  out.resize(body.size());
+  const auto& N = body.interpolation;
+  for (Index J : particles) {
+    if (N.row_offset.empty()) {
+      out[J] = body.x[J];
+      continue;
+    }
+    Vec3 u = Vec3::Zero();
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
+    out[J] = body.cloud.X[J] + u;
+  }
+}
+
+namespace {
+
+// Closest point of triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+
+}  // namespace
+
+ContactReport::ContactReport(const Body& cell, const Body& substrate, const std::string& surface, double contact_gap,
+                             double range)
+    : cell_(cell), substrate_(substrate), surface_(surface), contact_gap_(contact_gap), range_(range) {
+  const auto& cloud = substrate.cloud;
+  const std::uint32_t bit = surface == "all" ? 0u : cloud.surface_bit(surface);
+  if (surface != "all" && bit == 0u)
+    throw std::invalid_argument("contact report: body '" + substrate.name + "' has no surface named '" + surface + "'");
+  for (const auto& face : cloud.boundary_faces) {
+    bool on = true;
+    for (int k = 0; k < face.n_nodes && bit != 0u; ++k) on = on && (cloud.surface_mask[face.nodes[k]] & bit);
+    if (!on) continue;
+    triangles_.push_back({face.nodes[0], face.nodes[1], face.nodes[2]});
+    if (face.n_nodes == 4) triangles_.push_back({face.nodes[0], face.nodes[2], face.nodes[3]});
+  }
+  if (triangles_.empty())
+    throw std::invalid_argument("contact report: surface '" + surface + "' of body '" + substrate.name + "' has no faces");
+}
+
+ContactSample ContactReport::measure() const {
+  ContactSample s;
+  double mass = 0.0;
+  for (std::size_t i = 0; i < cell_.size(); ++i) {
+    s.centroid += cell_.mass[i] * cell_.x[i];
+    mass += cell_.mass[i];
+  }
+  s.centroid /= mass;
+
+  // Current triangles: physical corners, centroids in a kd-tree, largest circumradius.
+  std::vector<Index> corners;
+  for (const auto& t : triangles_) corners.insert(corners.end(), t.begin(), t.end());
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  std::vector<Vec3> sub;
+  physical_points(substrate_, corners, sub);
+  std::vector<Vec3> centre(triangles_.size());
+  double reach = 0.0;
+  for (std::size_t t = 0; t < triangles_.size(); ++t) {
+    const auto& n = triangles_[t];
+    centre[t] = (sub[n[0]] + sub[n[1]] + sub[n[2]]) / 3.0;
+    for (int k = 0; k < 3; ++k) reach = std::max(reach, (sub[n[k]] - centre[t]).norm());
+  }
+  const rk::NeighborSearch search(centre);
+
+  const auto& boundary = cell_.cloud.boundary_particles;
+  std::vector<Index> cell_particles(boundary.begin(), boundary.end());
+  std::vector<Vec3> cell;
+  physical_points(cell_, cell_particles, cell);
+
+  s.min_gap = range_;
+  std::vector<std::pair<Index, double>> found;
+  std::vector<Vec3> patch, patch_normal;
+  for (Index i : cell_particles) {
+    search.query(cell[i], range_ + reach, found);
+    double best = std::numeric_limits<double>::infinity(), signed_gap = 0.0;
+    Vec3 normal = Vec3::Zero();
+    for (const auto& f : found) {
+      const auto& n = triangles_[f.first];
+      const Vec3 q = closest_on_triangle(cell[i], sub[n[0]], sub[n[1]], sub[n[2]]);
+      const double distance = (cell[i] - q).norm();
+      if (distance < best) {
+        best = distance;
+        normal = (sub[n[1]] - sub[n[0]]).cross(sub[n[2]] - sub[n[0]]).normalized();
+        signed_gap = (cell[i] - q).dot(normal) < 0.0 ? -distance : distance;
+      }
+    }
+    if (!std::isfinite(best)) continue;  // no face within range
+    s.min_gap = std::min(s.min_gap, signed_gap);
+    if (signed_gap < contact_gap_) {
+      patch.push_back(cell[i]);
+      patch_normal.push_back(normal);
+    }
+  }
+  s.contact_particles = static_cast<std::int64_t>(patch.size());
+  if (!patch.empty()) {
+    Vec3 c = Vec3::Zero(), n = Vec3::Zero();
+    for (std::size_t k = 0; k < patch.size(); ++k) {
+      c += patch[k];
+      n += patch_normal[k];
+    }
+    c /= static_cast<double>(patch.size());
+    n.normalize();
+    for (const auto& p : patch) {
+      const Vec3 r = p - c;
+      s.contact_radius = std::max(s.contact_radius, (r - r.dot(n) * n).norm());
+    }
+  }
+  return s;
+}
+
+}  // namespace rkpm::sim
