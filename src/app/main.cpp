@@ -1,9 +1,11 @@
 // rkpm: the command-line program.
 //   rkpm run SCENE.toml [--out DIR] [--threads N] [--restart CHECKPOINT]
+//   rkpm shape SCENE.toml FRAME.vtu|RUN_DIR [--body NAME] [--csv FILE]
 //   rkpm params [--markdown]
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/run.hpp"
+#include "rkpm/sim/shape_command.hpp"
 
 #include <CLI/CLI.hpp>
 #include <omp.h>
@@ -36,6 +38,14 @@ int main(int argc, char** argv) {
   run->add_flag("--allow-unstable-dt", allow_unstable,
                 "Keep a requested dt above the stable estimate (for testing the blow-up diagnosis)");
 
+  auto* shape = app.add_subcommand("shape", "Shape report (thickness profile, Evans-Fung comparison) of a frame of a run");
+  rkpm::sim::ShapeCommandOptions shape_options;
+  std::string shape_scene, shape_frame, shape_csv;
+  shape->add_option("scene", shape_scene, "Scene file (TOML) of the run")->required();
+  shape->add_option("frame", shape_frame, "A .vtu frame, or the run's output directory (its last frame)")->required();
+  shape->add_option("--body", shape_options.body, "Shell body to measure (default: [output] shape_report)");
+  shape->add_option("--csv", shape_csv, "Profile CSV to write (default: shape_profile.csv beside the frame)");
+
   auto* params = app.add_subcommand("params", "Print every scene parameter: section, key, type, unit, default, range, help");
   bool markdown = false;
   params->add_flag("--markdown", markdown, "Markdown table (the README's parameter reference)");
@@ -49,6 +59,13 @@ int main(int argc, char** argv) {
   if (*params) {
     rkpm::scene::print_params(std::cout, markdown ? rkpm::scene::ParamFormat::markdown : rkpm::scene::ParamFormat::text);
     return 0;
+  }
+
+  if (*shape) {
+    shape_options.scene = shape_scene;
+    shape_options.frame = shape_frame;
+    shape_options.csv = shape_csv;
+    return rkpm::sim::run_shape_command(shape_options, std::cout, std::cerr);
   }
 
   rkpm::scene::Scene scene;

@@ -25,24 +25,6 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
 
-particles::Cloud make_cloud(const scene::BodySpec& spec) {
-  return std::visit(Overloaded{
-                        [](const particles::BlockSpec& s) { return particles::make_block(s); },
-                        [](const particles::SphereSpec& s) { return particles::make_sphere(s); },
-                        [](const particles::ShellSpec& s) { return particles::make_shell(s); },
-                        [](const scene::VtuImport& s) {
-                          particles::Cloud c = particles::import_vtu(s.path);
-                          if (s.scale != 1.0) {
-                            for (auto& x : c.X) x *= s.scale;
-                            for (auto& v : c.volume) v *= s.scale * s.scale * s.scale;
-                            for (auto& a : c.boundary_area) a *= s.scale * s.scale;
-                          }
-                          return c;
-                        },
-                    },
-                    scene::cloud_recipe(spec));
-}
-
 rk::RKSettings rk_settings(const scene::ParamSet& p) {
   rk::RKSettings s;
   s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
@@ -221,7 +203,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->id = id;
   body->density = spec.body.real("density");
   try {
-    body->cloud = make_cloud(spec);
+    body->cloud = build_cloud(spec);
   } catch (const particles::CloudError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.cloud), body->name, e.what()));
   }
@@ -282,6 +264,24 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 }
 
 }  // namespace
+
+particles::Cloud build_cloud(const scene::BodySpec& spec) {
+  return std::visit(Overloaded{
+                        [](const particles::BlockSpec& s) { return particles::make_block(s); },
+                        [](const particles::SphereSpec& s) { return particles::make_sphere(s); },
+                        [](const particles::ShellSpec& s) { return particles::make_shell(s); },
+                        [](const scene::VtuImport& s) {
+                          particles::Cloud c = particles::import_vtu(s.path);
+                          if (s.scale != 1.0) {
+                            for (auto& x : c.X) x *= s.scale;
+                            for (auto& v : c.volume) v *= s.scale * s.scale * s.scale;
+                            for (auto& a : c.boundary_area) a *= s.scale * s.scale;
+                          }
+                          return c;
+                        },
+                    },
+                    scene::cloud_recipe(spec));
+}
 
 IntegratorSettings integrator_settings(const scene::Scene& scene) {
   const auto& p = scene.integrator;

@@ -20,6 +20,10 @@ struct SetupError : std::runtime_error {
 
 std::unique_ptr<World> build_world(const scene::Scene& scene);
 
+// The particle cloud of one body, as build_world makes it (generator or imported mesh).
+// Throws particles::CloudError for a mesh the importer rejects.
+particles::Cloud build_cloud(const scene::BodySpec& body);
+
 IntegratorSettings integrator_settings(const scene::Scene& scene);
 
 }  // namespace rkpm::sim
