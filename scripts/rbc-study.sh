@@ -5,7 +5,9 @@
 # Evans-Fung and against the finest run. Writes rbc-study/{study.csv, *.png, table.md}.
 # Usage: bash scripts/rbc-study.sh [BUILD_DIR] [OUT_DIR] [RESOLUTIONS...]
 #   RESOLUTIONS are face_cells:layers pairs, default 16:3 24:4 32:5 60:6
-#   (4,614 / 13,832 / 30,730 / 129,612 particles). The finest run takes hours.
+#   (4,614 / 13,832 / 30,730 / 129,612 particles). The finest run takes hours;
+#   a directory that already holds a summary.json is kept, so the study can be
+#   completed in several sittings.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -73,8 +75,8 @@ PY
 
 gnuplot <<EOF
 set datafile separator ","
-set terminal png size 900,600
-set key top right
+set terminal png size 900,600 noenhanced
+set key outside right
 set logscale x
 set grid
 set output "$out/study_vs_particles.png"
