@@ -7,7 +7,7 @@
 #   docs/figures/crawling_drift.png   the drift against time (gnuplot)
 #   the generated table of docs/crawling.md
 # Usage: bash scripts/crawling-study.sh [--coarse]
-#   --coarse: a 10-cell sphere on a 30 x 30 x 3 block (s0 = 1 um), about 1 minute;
+#   --coarse: an 11-cell sphere on a 30 x 30 x 3 block (s0 = 1 um), about 1 minute;
 #             writes into out/crawling-study only (the docs keep the default run).
 # The build directory is build/ unless RKPM_BUILD_DIR says otherwise; RKPM names an
 # already built executable instead; RKPM_THREADS sets the thread count (default 2);
@@ -45,7 +45,7 @@ variant() {
   sed -e "s/^grade_a = .*/grade_a = $2/" -e "s/^grade_b = .*/grade_b = $3/" "$scene" > "$file"
   if [ "$coarse" = 1 ]; then
     # s0 = lateral spacing / 1.25 = 1 um; eps keeps |W(d0)| = 1e-3 J/m^2; release 200 nm beyond 0.6368 s0.
-    sed -i -e 's/^cells = 16 .*/cells = 10/' -e 's/^cells = \[40, 40, 4\].*/cells = [30, 30, 3]/' \
+    sed -i -e 's/^cells = 17 .*/cells = 11/' -e 's/^cells = \[40, 40, 4\].*/cells = [30, 30, 3]/' \
       -e 's/^s0 = .*/s0 = 1e-6/' -e 's/^epsilon = .*/epsilon = 1.0331e-15/' \
       -e 's/^center = .*/center = [0.0, 0.0, 10.3368e-6]/' "$file"
   fi

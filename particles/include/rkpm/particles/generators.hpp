@@ -24,7 +24,11 @@ struct BlockSpec {
 Cloud make_block(const BlockSpec& spec);
 
 // Solid ball of hexahedra: a cube mapped onto the ball, n cells along a diameter.
-// Surface: surface.
+// The cloud is mirror-symmetric about the centre's three coordinate planes. An even
+// n puts a particle at the centre, where every surface point is equally near: a
+// field taken from the nearest surface particle (an LCE director with initial =
+// "surface_normal") gets an arbitrary direction there and breaks that symmetry;
+// an odd n has no particle there. Surface: surface.
 struct SphereSpec {
   Vec3 center = Vec3::Zero();
   double radius = 1.0;
