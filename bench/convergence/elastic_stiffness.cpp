@@ -33,7 +33,8 @@ void ElasticStiffness::apply(const Field& d, Field& Kd) {
 }
 
 std::vector<Mat3> ElasticStiffness::diagonal_blocks() const {
-  const auto& T = gradient_.transpose;
+  rk::CsrTranspose T;  // the step needs no transpose; this preconditioner does
+  T.build(gradient_.row_offset, gradient_.col, gradient_.n_columns);
   const auto n = static_cast<Index>(T.offset.size()) - 1;
   std::vector<Mat3> block(static_cast<std::size_t>(n), Mat3::Zero());
   const double lambda = material_.lambda, mu = material_.mu;

@@ -2,8 +2,10 @@
 
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/particles/dual_cells.hpp"
+#include "rkpm/rk/row_scatter.hpp"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <limits>
@@ -91,7 +93,7 @@ GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows,
     std::vector<std::pair<Index, Vec3>>().swap(rows[r]);
   }
   op.weight = std::move(weight);
-  op.transpose.build(op.row_offset, op.col, n_particles);
+  op.n_columns = n_particles;
   return op;
 }
 
@@ -125,6 +127,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
   {
     ShapeValues sv;
     std::vector<particles::DualFacet> facets;
+    std::vector<std::pair<Index, double>> near_cell;
     RowAccumulator acc(n);
 #pragma omp for schedule(dynamic, 64)
     for (Index L = 0; L < n; ++L) {
@@ -141,11 +144,15 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
         continue;
       }
       cells.facets(L, facets);
+      // One tree query per cell instead of one per facet: the facets lie within `reach`.
+      double reach = 0.0;
+      for (const auto& f : facets) reach = std::max(reach, (f.point - XL).norm());
+      rk.candidates(XL, reach, near_cell);
       double volume = 0.0;
       bool ok = true;
       for (const auto& f : facets) {
         volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact for the closed cell
-        if (!rk.evaluate(f.point, sv, false)) {
+        if (!rk.evaluate_among(f.point, near_cell, sv, false)) {
           ok = false;
           break;
         }
@@ -257,17 +264,20 @@ void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& 
 }
 
 void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f) {
-  const auto& T = op.transpose;
-  const auto n = static_cast<Index>(T.offset.size()) - 1;
-  f.resize(n);
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    Vec3 sum = Vec3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) {
-      const Index row = T.row[t];
-      sum.noalias() += op.weight[row] * (P[row] * op.grad[T.entry[t]]);
-    }
-    f[I] = sum;
+  const int threads = omp_get_max_threads();
+  RowScatter scatter;
+  scatter.plan(op.n_rows(), op.n_columns, {{&op.row_offset, &op.col}}, threads, 1);
+  f.resize(static_cast<std::size_t>(op.n_columns));
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    scatter.clear(t);
+    Vec3* sum = scatter.buffer(t, 0);
+    for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L)
+      for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
+        sum[op.col[k]].noalias() += op.weight[L] * (P[L] * op.grad[k]);
+#pragma omp barrier
+    scatter.reduce(t, 0, 1.0, f);
   }
 }
 

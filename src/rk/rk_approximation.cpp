@@ -80,8 +80,21 @@ RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings setti
     : RKApproximation(cloud.X, scaled(local_spacing(cloud), settings.support), settings) {}
 
 bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
-  return settings_.basis == Basis::Linear ? evaluate_basis<4>(x, out, with_gradient)
-                                          : evaluate_basis<10>(x, out, with_gradient);
+  search_.query(x, a_max_, out.scratch);
+  return evaluate_among(x, out.scratch, out, with_gradient);
+}
+
+void RKApproximation::candidates(const Vec3& centre, double reach,
+                                 std::vector<std::pair<Index, double>>& out) const {
+  // A point within `reach` of the centre is reached only by particles within
+  // a_max + reach of the centre; the relative slack covers the rounding of that bound.
+  search_.query(centre, (a_max_ + reach) * (1.0 + 1e-9), out);
+}
+
+bool RKApproximation::evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,
+                                     ShapeValues& out, bool with_gradient) const {
+  return settings_.basis == Basis::Linear ? evaluate_basis<4>(x, candidates, out, with_gradient)
+                                          : evaluate_basis<10>(x, candidates, out, with_gradient);
 }
 
 void RKApproximation::evaluate_or_throw(const Vec3& x, ShapeValues& out, bool with_gradient,
@@ -97,20 +110,23 @@ void RKApproximation::evaluate_or_throw(const Vec3& x, ShapeValues& out, bool wi
 }
 
 template <int N>
-bool RKApproximation::evaluate_basis(const Vec3& x, ShapeValues& out, bool with_gradient) const {
+bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,
+                                     ShapeValues& out, bool with_gradient) const {
   using Basis = MonomialBasis<N>;
   using VecN = Eigen::Matrix<double, N, 1>;
   using MatN = Eigen::Matrix<double, N, N>;
 
-  search_.query(x, a_max_, out.scratch);
   out.ids.clear();
   out.psi.clear();
   out.grad.clear();
   // Keep only the particles whose own support covers x; phi_I(x) > 0 for those.
   const double scale = a_max_;
   MatN M = MatN::Zero();
-  for (const auto& [id, d2] : out.scratch) {
+  for (const auto& candidate : candidates) {
+    const Index id = candidate.first;
     const double a = a_[static_cast<std::size_t>(id)];
+    // The distance from x itself (the candidate's stored one may be from another centre).
+    const double d2 = (X_[static_cast<std::size_t>(id)] - x).squaredNorm();
     if (d2 >= a * a) continue;
     const double w = evaluate_kernel(settings_.kernel, std::sqrt(d2) / a).w;
     if (w <= 0.0) continue;

@@ -1,6 +1,8 @@
 // The per-step mechanics of one body: kinematics, stress and internal force.
 #include "rkpm/sim/body.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <limits>
 
@@ -29,43 +31,104 @@ void update_positions(Body& body) {
   for (Index i = 0; i < n; ++i) body.x[i] = body.cloud.X[i] + body.d[i];
 }
 
+namespace {
+// One pass over the rows of the gradient operator (and of the interpolation operator
+// when the body is stabilized), so each row is read from memory once per step:
+//   F_L = sum_I x_I (x) b_I(X_L)                 (and Grad_X h with the Frank term),
+//   P_L = stress(L, F_L, Grad_X h_L, flux_L),
+//   f_I += V_L P_L b_I(X_L)                      (the internal force, scattered),
+//   div_I += V_L flux_L b_I(X_L)                 (the Frank term's weak divergence),
+//   r_L = d_L - sum_I Psi_I(X_L) d_I,  f_L += W_L r_L,  f_I -= Psi_I(X_L) W_L r_L
+//                                                (the stabilization, rk/stabilization.hpp).
+// The scatter goes into per-thread buffers summed in thread order (rk/row_scatter.hpp).
+template <class Stress>
+void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
+  const auto& op = body.gradient;
+  const auto& N = body.interpolation;
+  auto& stab = body.stabilization;
+  const bool stabilized = stab.active();
+  const bool frank = dir != nullptr && dir->frank;
+  const int threads = omp_get_max_threads();
+  auto& scatter = body.force_scatter;
+  if (!scatter.planned_for(threads)) {
+    std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
+    if (stabilized) patterns.push_back({&N.row_offset, &N.col});
+    scatter.plan(op.n_rows(), static_cast<Index>(body.size()), patterns, threads, frank ? 2 : 1);
+  }
+  std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    scatter.clear(t);
+    Vec3* f = scatter.buffer(t, 0);
+    Vec3* div = frank ? scatter.buffer(t, 1) : nullptr;
+    double stabilization_energy = 0.0;
+    for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
+      const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+      Mat3 F = Mat3::Zero();
+      for (Index k = k0; k < k1; ++k) F.noalias() += body.x[op.col[k]] * op.grad[k].transpose();
+      Mat3 grad_h = Mat3::Zero();
+      if (frank) {
+        for (Index k = k0; k < k1; ++k) grad_h.noalias() += dir->h[op.col[k]] * op.grad[k].transpose();
+        dir->grad_h[L] = grad_h;
+      }
+      body.F[L] = F;
+      Mat3 flux = Mat3::Zero();
+      const Mat3 P = stress(L, F, grad_h, flux);
+      body.P[L] = P;
+      const double w = op.weight[L];
+      for (Index k = k0; k < k1; ++k) f[op.col[k]].noalias() += w * (P * op.grad[k]);
+      if (frank) {
+        dir->frank_flux[L] = flux;
+        for (Index k = k0; k < k1; ++k) div[op.col[k]].noalias() += w * (flux * op.grad[k]);
+      }
+      if (stabilized) {
+        Vec3 interpolated = Vec3::Zero();
+        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) interpolated += N.psi[k] * body.d[N.col[k]];
+        const Vec3 r = body.d[L] - interpolated;
+        stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
+        const Vec3 wr = stab.weight[L] * r;
+        stab.residual[L] = wr;
+        f[L] += wr;
+        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) f[N.col[k]] -= N.psi[k] * wr;
+      }
+    }
+    energy[static_cast<std::size_t>(t)] = stabilization_energy;
+#pragma omp barrier
+    // f holds f_int plus the stabilization's resistance; the body's force is minus that.
+    scatter.reduce(t, 0, -1.0, body.force);
+    if (frank) {
+      scatter.reduce(t, 1, 1.0, dir->frank_divergence);
+#pragma omp barrier
+      // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
+#pragma omp for schedule(static)
+      for (Index I = 0; I < static_cast<Index>(body.size()); ++I) dir->frank_divergence[I] /= -body.cloud.volume[I];
+    }
+  }
+  body.stabilization_energy = 0.0;
+  for (double e : energy) body.stabilization_energy += e;
+}
+}  // namespace
+
 void compute_internal_forces(Body& body) {
-  rk::deformation_gradients(body.gradient, body.x, body.F);
-  const auto n = static_cast<Index>(body.F.size());
   std::visit(Overloaded{
                  [&](const MooneyRivlinMaterial& m) {
-#pragma omp parallel for schedule(static)
-                   for (Index L = 0; L < n; ++L) body.P[L] = m.at_point[L].first_piola(body.F[L]);
+                   force_pass(body, nullptr, [&](Index L, const Mat3& F, const Mat3&, Mat3&) {
+                     return m.at_point[L].first_piola(F);
+                   });
                  },
                  [&](const LCEMaterial& m) {
                    DirectorField& dir = *body.director;
-                   // Grad_X h = sum_I h_I (x) b_I: the same gather as F, applied to h.
-                   if (dir.frank) rk::deformation_gradients(body.gradient, dir.h, dir.grad_h);
-#pragma omp parallel for schedule(static)
-                   for (Index L = 0; L < n; ++L) {
-                     const auto p = director_at(dir, static_cast<std::size_t>(L));
-                     if (m.activity.empty()) {
-                       body.P[L] = m.model.first_piola(body.F[L], p);
-                     } else {
-                       body.P[L] = m.model.first_piola_passive(body.F[L], p) +
-                                   m.activity[L] * m.model.first_piola_active(body.F[L], p.h);
-                     }
-                     if (dir.frank) dir.frank_flux[L] = m.model.frank_flux(body.F[L], p);
-                   }
-                   if (dir.frank) {
-                     // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
-                     rk::internal_forces(body.gradient, dir.frank_flux, dir.frank_divergence);
-#pragma omp parallel for schedule(static)
-                     for (Index I = 0; I < n; ++I) dir.frank_divergence[I] /= -body.cloud.volume[I];
-                   }
+                   force_pass(body, &dir, [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
+                     materials::DirectorPoint p;
+                     p.h = dir.h[L];
+                     p.h0 = dir.h0[L];
+                     p.grad_h = grad_h;
+                     const double activity = m.activity.empty() ? 1.0 : m.activity[L];
+                     return m.model.first_piola(F, p, activity, dir.frank ? &flux : nullptr);
+                   });
                  }},
              body.material);
-  rk::internal_forces(body.gradient, body.P, body.force);
-  const auto np = static_cast<Index>(body.size());
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < np; ++I) body.force[I] = -body.force[I];
-  if (body.stabilization.active())
-    body.stabilization_energy = rk::add_stabilization_forces(body.interpolation, body.stabilization, body.d, body.force);
 }
 
 double strain_energy(const Body& body) {

@@ -114,6 +114,14 @@ struct LiquidCrystalElastomer {
     const Kinematics k(F);
     return passive_piola(F, d, k) + k.J * cauchy_active(d.h) * k.F_inv_T;
   }
+  // What the force loop needs, from one set of kinematics: P with the active part
+  // scaled by `activity` (the local value of the activity field, 1 = zeta), and the
+  // Frank flux dW/d(Grad_X h) when `frank_flux` is given.
+  Mat3 first_piola(const Mat3& F, const DirectorPoint& d, double activity, Mat3* frank_flux) const {
+    const Kinematics k(F);
+    if (frank_flux) *frank_flux = frank_flux_at(d, k);
+    return passive_piola(F, d, k) + (activity * k.J) * cauchy_active(d.h) * k.F_inv_T;
+  }
 
   // Passive Cauchy stress P_passive F^T / J [Pa] (non-symmetric off director equilibrium).
   Mat3 cauchy_passive(const Mat3& F, const DirectorPoint& d) const {
@@ -141,8 +149,8 @@ struct LiquidCrystalElastomer {
   // functional derivative dF/dh = dW/dh - Div_X(flux); the simulator assembles
   // it with the RK smoothed gradients and passes it to director_rate.
   // (The seed's Eq. 6 writes this term as Div[F^-1 J F^-T G]: other index order.)
-  Mat3 frank_flux(const Mat3& F, const DirectorPoint& d) const {
-    const Kinematics k(F);
+  Mat3 frank_flux(const Mat3& F, const DirectorPoint& d) const { return frank_flux_at(d, Kinematics(F)); }
+  Mat3 frank_flux_at(const DirectorPoint& d, const Kinematics& k) const {
     return (2.0 * frank_coefficient() * k.J) * (d.grad_h * k.F_inv * k.F_inv_T);
   }
 

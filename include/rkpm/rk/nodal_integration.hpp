@@ -12,9 +12,11 @@
 // Direct nodal integration (b_I = grad Psi_I(X_L)) is kept only as a contrast: it
 // is unstable (spurious zero-energy modes).
 //
-// A step then computes F_L = sum_I x_I (x) b_I(X_L) (a gather over rows) and the
-// internal force f_I = sum_L V_L P_L b_I(X_L) (a gather over the transposed rows):
-// no atomics, no allocation.
+// A step then computes F_L = sum_I x_I (x) b_I(X_L) (a gather over row L) and the
+// internal force f_I = sum_L V_L P_L b_I(X_L) (a scatter from the same row, into
+// per-thread buffers: rkpm/rk/row_scatter.hpp): no atomics. The simulator fuses both
+// into one pass over the operator (sim/body_mechanics.cpp); the two functions below
+// are the unfused building blocks, for tests and studies.
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -41,14 +43,15 @@ struct CsrTranspose {
   void build(const std::vector<Index>& row_offset, const std::vector<Index>& col, Index n_columns);
 };
 
-// A sparse matrix of 3-vectors in compressed rows, with its transpose.
+// A sparse matrix of 3-vectors in compressed rows. Its transposed products are
+// computed as deterministic scatters from the rows (rkpm/rk/row_scatter.hpp), so no
+// transpose is stored.
 struct GradientOperator {
   std::vector<Index> row_offset;  // n_points + 1
   std::vector<Index> col;         // particle I of each entry
   std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m]
   std::vector<double> weight;     // V_L: integration weight of each row [m^3]
-
-  CsrTranspose transpose;         // particle I -> the rows that reference it
+  Index n_columns = 0;            // particles
 
   Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
 };

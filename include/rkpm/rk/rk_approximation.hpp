@@ -72,6 +72,14 @@ class RKApproximation {
   // Same, but throws ApproximationError with a message naming `what` (e.g. "particle 12").
   void evaluate_or_throw(const Vec3& x, ShapeValues& out, bool with_gradient, const std::string& what) const;
 
+  // For many evaluation points near one centre (the facets of one smoothing cell): the
+  // particles that can reach any point within `reach` of `centre`, sorted by id, found
+  // with one tree query; then `evaluate_among` evaluates at such a point from that list
+  // alone, with the same result as `evaluate` (same neighbours, same order).
+  void candidates(const Vec3& centre, double reach, std::vector<std::pair<Index, double>>& out) const;
+  bool evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
+                      bool with_gradient) const;
+
   const std::vector<Vec3>& points() const { return X_; }
   const std::vector<double>& support_radius() const { return a_; }
   const RKSettings& settings() const { return settings_; }
@@ -79,7 +87,8 @@ class RKApproximation {
 
  private:
   template <int N>
-  bool evaluate_basis(const Vec3& x, ShapeValues& out, bool with_gradient) const;
+  bool evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
+                      bool with_gradient) const;
 
   const std::vector<Vec3>& X_;
   std::vector<double> a_;

@@ -13,6 +13,7 @@
 #include "rkpm/materials/mooney_rivlin.hpp"
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
+#include "rkpm/rk/row_scatter.hpp"
 #include "rkpm/rk/stabilization.hpp"
 #include "rkpm/sim/essential_bc.hpp"
 
@@ -72,6 +73,7 @@ struct Body {
   std::vector<Vec3> x;                      // X + d
   std::vector<Vec3> force;                  // total force of this step [N]
   std::vector<Mat3> F, P;                   // per integration point
+  rk::RowScatter force_scatter;             // scratch of the force pass (per-thread buffers)
 
   Material material;
   std::optional<DirectorField> director;
