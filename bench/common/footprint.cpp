@@ -1,0 +1,102 @@
+#include "footprint.hpp"
+
+#include "optional_members.hpp"
+
+#include <variant>
+
+namespace rkpm::bench {
+
+namespace {
+
+template <class T>
+std::size_t bytes(const std::vector<T>& v) {
+  return v.size() * sizeof(T);
+}
+
+std::size_t gradient_bytes(const rk::GradientOperator& g) {
+  return bytes(g.row_offset) + bytes(g.col) + bytes(g.grad) + bytes(g.weight) + transpose_bytes(g);
+}
+
+std::size_t interpolation_bytes(const rk::NodalInterpolation& n) {
+  return bytes(n.row_offset) + bytes(n.col) + bytes(n.psi) + transpose_bytes(n);
+}
+
+std::size_t material_bytes(const sim::Material& material) {
+  if (const auto* mr = std::get_if<sim::MooneyRivlinMaterial>(&material)) return bytes(mr->at_point);
+  return bytes(std::get<sim::LCEMaterial>(material).activity);
+}
+
+template <class Measure>
+auto sum_over_bodies(const sim::World& world, Measure measure) {
+  decltype(measure(*world.bodies.front())) sum{};
+  for (const auto& b : world.bodies) sum += measure(*b);
+  return sum;
+}
+
+}  // namespace
+
+Footprint footprint(const sim::Body& b) {
+  Footprint f;
+  const auto& q = b.boundary;
+  f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation) + bytes(q.point) + bytes(q.area) +
+                bytes(q.owner) + bytes(q.surface_mask) + bytes(q.row_offset) + bytes(q.col) + bytes(q.psi) +
+                (b.rk ? bytes(b.rk->support_radius()) : 0);
+  f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
+            bytes(b.mass) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
+            material_bytes(b.material) + scatter_bytes(b);
+  if (b.director) {
+    const auto& d = *b.director;
+    f.state += bytes(d.h) + bytes(d.h0) + bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence) +
+               bytes(d.rate) + bytes(d.F_rate) + bytes(d.normals);
+  }
+  const auto& c = b.cloud;
+  f.cloud = bytes(c.X) + bytes(c.volume) + bytes(c.mesh.type) + bytes(c.mesh.offset) + bytes(c.mesh.nodes) +
+            bytes(c.boundary_faces) + bytes(c.boundary_particles) + bytes(c.boundary_normal) +
+            bytes(c.boundary_area) + bytes(c.boundary_index) + bytes(c.surface_mask);
+  return f;
+}
+
+Footprint footprint(const sim::World& world) {
+  return sum_over_bodies(world, [](const sim::Body& b) { return footprint(b); });
+}
+
+Traffic internal_force_traffic(const sim::Body& b) {
+  Traffic t;
+  // F_L = sum_I x_I (x) b_I(X_L) and f_I = sum_L V_L P_L b_I(X_L): the operator (and
+  // its transpose where one is stored), each array once. Scatter buffers are the
+  // kernel's own scratch, not compulsory traffic.
+  t.operators = gradient_bytes(b.gradient);
+  t.state_read = bytes(b.x);
+  t.state_written = bytes(b.F) + bytes(b.P) + bytes(b.force);
+  t.state_read += material_bytes(b.material);
+  if (b.director) {
+    const auto& d = *b.director;
+    t.state_read += bytes(d.h) + bytes(d.h0);
+    if (d.frank) {
+      // Grad h (a gather like F), the Frank flux, and its divergence at the particles
+      // (a transposed product, divided by the particle volumes).
+      t.state_written += bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence);
+      t.state_read += bytes(b.cloud.volume);
+    }
+  }
+  if (b.stabilization.active()) {
+    // r = (I - N) d, then f -= (I - N)^T W r: the interpolation operator (and transpose).
+    t.operators += interpolation_bytes(b.interpolation) + bytes(b.stabilization.weight);
+    t.state_read += bytes(b.d);
+    t.state_written += bytes(b.stabilization.residual);
+  }
+  return t;
+}
+
+Traffic internal_force_traffic(const sim::World& world) {
+  return sum_over_bodies(world, [](const sim::Body& b) { return internal_force_traffic(b); });
+}
+
+double internal_force_pair_updates(const sim::Body& b) {
+  double entries = 2.0 * static_cast<double>(b.gradient.col.size());
+  if (b.director && b.director->frank) entries *= 2.0;  // Grad h and the flux divergence: two more passes
+  if (b.stabilization.active()) entries += 2.0 * static_cast<double>(b.interpolation.col.size());
+  return entries;
+}
+
+}  // namespace rkpm::bench

@@ -1,0 +1,138 @@
+#include "measure_size.hpp"
+
+#include "../common/footprint.hpp"
+#include "memory.hpp"
+#include "rkpm/particles/cloud.hpp"
+#include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/sim/build.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <vector>
+
+namespace rkpm::scaling {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_of(const std::function<void()>& work) {
+  const auto start = Clock::now();
+  work();
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// The RK settings build_world derives from [body.rk]; repeated here because the split
+// re-runs build_world's stages through the public rk:: functions.
+rk::RKSettings rk_settings(const scene::ParamSet& p) {
+  rk::RKSettings s;
+  s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
+  s.support = p.real("support");
+  s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
+  return s;
+}
+
+// build_world's RK stages for every body, timed one by one (2 threads, as the run).
+void time_stages(const scene::Scene& scene, SizeResult& r) {
+  for (const auto& spec : scene.bodies) {
+    particles::Cloud cloud;
+    r.cloud_s += seconds_of([&] { cloud = sim::build_cloud(spec); });
+    std::unique_ptr<rk::RKApproximation> approx;
+    r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk)); });
+    const auto scheme = spec.rk.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
+    r.gradient_s += seconds_of([&] { (void)rk::build_gradient_operator(cloud, *approx, scheme); });
+    r.interpolation_s += seconds_of([&] { (void)rk::build_nodal_interpolation(cloud, *approx); });
+    r.boundary_s += seconds_of([&] { (void)rk::build_boundary_quadrature(cloud, *approx); });
+    // The neighbour search inside the interpolation build: RKApproximation::evaluate
+    // queries the largest support radius around each point. A tree of our own (its
+    // build not timed) answers the same queries.
+    const rk::NeighborSearch search(cloud.X);
+    const double radius = *std::max_element(approx->support_radius().begin(), approx->support_radius().end());
+    const auto n = static_cast<Index>(cloud.size());
+    std::size_t found_total = 0;
+    r.query_s += seconds_of([&] {
+#pragma omp parallel reduction(+ : found_total)
+      {
+        std::vector<std::pair<Index, double>> found;
+#pragma omp for schedule(dynamic, 64)
+        for (Index i = 0; i < n; ++i) {
+          search.query(cloud.X[i], radius, found);
+          found_total += found.size();
+        }
+      }
+    });
+    if (found_total == 0) r.note += "(no neighbours found?) ";
+  }
+}
+
+}  // namespace
+
+SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureSettings& settings) {
+  SizeResult r;
+  r.geometry = bench::geometry_name(geometry);
+  r.resolution = resolution;
+  // Everything after this point is the size's own memory: scene, world, scratch.
+  r.baseline_bytes = static_cast<double>(peak_rss_bytes());
+  const scene::Scene scene = bench::make_scene(geometry, resolution, settings.rbc_scene);
+
+  omp_set_num_threads(2);
+  {
+    std::unique_ptr<sim::World> world;
+    r.setup_s = seconds_of([&] { world = sim::build_world(scene); });
+    sim::Integrator integrator(*world, sim::integrator_settings(scene));
+    r.init_s = seconds_of([&] { integrator.initialize(); });
+    r.particles = static_cast<double>(world->particle_count());
+    const bench::Footprint fp = bench::footprint(*world);
+    r.operators_bytes = static_cast<double>(fp.operators);
+    r.state_bytes = static_cast<double>(fp.state);
+    r.cloud_bytes = static_cast<double>(fp.cloud);
+    r.traffic_bytes = static_cast<double>(bench::internal_force_traffic(*world).total());
+
+    const auto timed_steps = [&](int threads, int warmup, int count) {
+      omp_set_num_threads(threads);
+      for (int i = 0; i < warmup; ++i) integrator.step();
+      std::vector<double> t;
+      for (int i = 0; i < count; ++i) t.push_back(seconds_of([&] { integrator.step(); }));
+      return median(t);
+    };
+    r.step_2t_s = timed_steps(2, settings.warmup, settings.steps);
+    r.step_1t_s = timed_steps(1, 1, settings.steps_1t);
+    r.steps_timed = settings.steps;
+
+    // The internal force alone, after the steps (it leaves Body::force without the
+    // terms' share, which the integrator would otherwise read). One untimed pass each.
+    const auto timed_force = [&](int threads, int count) {
+      omp_set_num_threads(threads);
+      std::vector<double> t;
+      for (int i = 0; i <= count; ++i) {
+        const double s = seconds_of([&] {
+          for (auto& b : world->bodies) sim::compute_internal_forces(*b);
+        });
+        if (i > 0) t.push_back(s);
+      }
+      return median(t);
+    };
+    r.force_2t_s = timed_force(2, settings.steps);
+    r.force_1t_s = timed_force(1, settings.steps_1t);
+
+    r.peak_bytes = static_cast<double>(peak_rss_bytes()) - r.baseline_bytes;
+  }  // the world is freed before the stages are built again
+
+  if (settings.split) {
+    omp_set_num_threads(2);
+    time_stages(scene, r);
+  }
+  return r;
+}
+
+}  // namespace rkpm::scaling

@@ -1,0 +1,35 @@
+// The study's outputs: a CSV with every measured number (docs/figures/perf-scaling.csv)
+// and the markdown tables and target list of docs/performance.md.
+#pragma once
+
+#include "study.hpp"
+
+#include <string>
+
+namespace rkpm::scaling {
+
+// The default RBC relaxation (examples/rbc/rbc.toml run to convergence by `rkpm run`),
+// measured by the script; wall_s < 0: not measured in this run.
+struct RbcRelaxation {
+  double wall_s = -1.0;
+  long long steps = 0;
+  std::string status;
+};
+
+struct Targets {
+  double bandwidth_fraction = 0.5;     // internal-force step, of the triad bound
+  double step_exponent = 1.05;         // from 1e3 to 1e6 particles
+  double bytes_per_particle = 2048.0;  // peak RSS
+  double setup_s_per_100k = 2.0;
+  double rbc_relaxation_s = 60.0;
+};
+
+void write_csv(const std::string& path, const StudyResult& study);
+void write_markdown(const std::string& path, const StudyResult& study, const RbcRelaxation& rbc,
+                    const std::string& command, const std::string& revision);
+
+// Derived quantities, shared by both outputs.
+double bandwidth_fraction(const SizeResult& r, const TriadResult& triad);  // NaN when not measurable
+double setup_total_s(const SizeResult& r);                                   // build_world + initialize
+
+}  // namespace rkpm::scaling

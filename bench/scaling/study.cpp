@@ -1,0 +1,119 @@
+#include "study.hpp"
+
+#include "memory.hpp"
+#include "subprocess.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rkpm::scaling {
+
+namespace {
+
+// Bytes per particle assumed for a geometry's first size, before any measurement
+// (the smallest sizes are tiny whatever it is).
+constexpr double kDefaultBytesPerParticle = 8192.0;
+// Margin on the extrapolated peak: per-particle memory grows slowly with N
+// (operator rows lengthen near refined rims, allocator slack).
+constexpr double kEstimateMargin = 1.25;
+
+std::vector<double> ladder(const StudySettings& s) {
+  std::vector<double> targets;
+  const double step = std::pow(10.0, 1.0 / s.sizes_per_decade);
+  for (double t = s.min_particles; t <= s.max_particles * 1.0001; t *= step) targets.push_back(t);
+  return targets;
+}
+
+TriadResult parse_triad(const std::string& output) {
+  TriadResult t;
+  std::istringstream lines(output);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("TRIAD ", 0) != 0) continue;
+    std::istringstream words(line.substr(6));
+    std::string w;
+    while (words >> w) {
+      const auto eq = w.find('=');
+      const std::string key = w.substr(0, eq), value = w.substr(eq + 1);
+      if (key == "gb_per_s") t.gb_per_s = std::stod(value);
+      if (key == "array_bytes") t.array_bytes = static_cast<std::size_t>(std::stod(value));
+      if (key == "threads") t.threads = std::stoi(value);
+      if (key == "repetitions") t.repetitions = std::stoi(value);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+std::vector<std::string> child_arguments(bench::Geometry g, int resolution, const MeasureSettings& m) {
+  std::vector<std::string> a = {"--child",   bench::geometry_name(g), "--resolution", std::to_string(resolution),
+                                "--warmup",  std::to_string(m.warmup), "--steps",     std::to_string(m.steps),
+                                "--steps-1t", std::to_string(m.steps_1t), "--rbc-scene", m.rbc_scene};
+  if (!m.split) a.emplace_back("--no-split");
+  return a;
+}
+
+std::vector<std::string> triad_arguments(const StudySettings& s) {
+  return {"--triad-only", "--triad-mib", std::to_string(s.triad_array_bytes >> 20), "--triad-repetitions",
+          std::to_string(s.triad_repetitions)};
+}
+
+StudyResult run_study(const StudySettings& s) {
+  StudyResult study;
+  fmt::print(stderr, "triad: 3 arrays of {} MiB, 2 threads, best of {}\n", s.triad_array_bytes >> 20,
+             s.triad_repetitions);
+  const ChildOutcome triad = run_self(triad_arguments(s));
+  study.triad = parse_triad(triad.output);
+  if (!triad.ok || study.triad.gb_per_s <= 0.0) fmt::print(stderr, "triad failed: {}\n", triad.status);
+  else fmt::print(stderr, "triad: {:.2f} GB/s\n", study.triad.gb_per_s);
+
+  for (const bench::Geometry g : s.geometries) {
+    double bytes_per_particle = kDefaultBytesPerParticle;
+    std::string failed_smaller;
+    for (const double target : ladder(s)) {
+      const int resolution = bench::resolution_for(g, target);
+      SizeResult r;
+      r.geometry = bench::geometry_name(g);
+      r.resolution = resolution;
+      r.particles = static_cast<double>(bench::particles_at(g, resolution));
+      // A size that a smaller one could not do, or that would not fit, is not started.
+      const double estimate = kEstimateMargin * bytes_per_particle * r.particles;
+      const std::size_t available = available_bytes();
+      const double limit =
+          available > 0 ? std::min(s.memory_limit_bytes, 0.9 * static_cast<double>(available)) : s.memory_limit_bytes;
+      if (!failed_smaller.empty()) {
+        r.status = "skipped";
+        r.note = "a smaller size failed (" + failed_smaller + ")";
+      } else if (estimate > limit) {
+        r.status = "skipped";
+        r.note = fmt::format("estimated peak {:.3g} GB > limit {:.3g} GB", estimate / 1e9, limit / 1e9);
+      } else {
+        fmt::print(stderr, "{} resolution {} ({} particles): running\n", r.geometry, resolution, r.particles);
+        const ChildOutcome child = run_self(child_arguments(g, resolution, s.measure));
+        SizeResult measured;
+        bool found = false;
+        std::istringstream lines(child.output);
+        std::string line;
+        while (std::getline(lines, line)) found = from_line(line, measured) || found;
+        if (child.ok && found) {
+          r = measured;
+          if (r.particles > 0 && r.peak_bytes > 0) bytes_per_particle = r.peak_bytes / r.particles;
+        } else {
+          r.status = "failed";
+          r.note = found && !measured.note.empty() ? measured.note : child.status;
+          failed_smaller = fmt::format("{} particles: {}", r.particles, r.note);
+        }
+      }
+      fmt::print(stderr, "{} {} particles: {}{}{}\n", r.geometry, r.particles, r.status, r.note.empty() ? "" : ": ",
+                 r.note);
+      study.sizes.push_back(r);
+    }
+  }
+  return study;
+}
+
+}  // namespace rkpm::scaling

@@ -1,0 +1,36 @@
+// The particle-count study: a geometric ladder of sizes per geometry, each size in
+// its own child process, plus the triad in one more.
+#pragma once
+
+#include "../common/scenes.hpp"
+#include "measure_size.hpp"
+#include "record.hpp"
+#include "triad.hpp"
+
+#include <vector>
+
+namespace rkpm::scaling {
+
+struct StudySettings {
+  double min_particles = 1e3;
+  double max_particles = 1e6;
+  int sizes_per_decade = 2;  // 1e3..1e6: 7 sizes
+  std::vector<bench::Geometry> geometries = {bench::Geometry::Block, bench::Geometry::Sphere, bench::Geometry::Shell};
+  double memory_limit_bytes = 16e9;  // sizes estimated above this (or above 90 % of MemAvailable) are skipped
+  MeasureSettings measure;
+  std::size_t triad_array_bytes = std::size_t{256} << 20;
+  int triad_repetitions = 10;
+};
+
+struct StudyResult {
+  TriadResult triad;
+  std::vector<SizeResult> sizes;  // geometry by geometry, small to large
+};
+
+StudyResult run_study(const StudySettings& settings);
+
+// The child-process arguments for one size, and for the triad.
+std::vector<std::string> child_arguments(bench::Geometry g, int resolution, const MeasureSettings& m);
+std::vector<std::string> triad_arguments(const StudySettings& s);
+
+}  // namespace rkpm::scaling

@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# Particle-count scaling study (docs/performance.md): for a Mooney-Rivlin block, an
+# LCE sphere and the RBC shell from 1e3 to --max particles, the set-up time (split by
+# stage), the time per step with 1 and 2 threads, the internal force against the
+# STREAM-triad bandwidth bound, peak memory per particle and the fitted exponents;
+# then the default RBC relaxation's wall time. Each size runs in its own process.
+# Writes OUT_DIR/perf-scaling.csv and OUT_DIR/perf-{step,setup,memory}-vs-particles.png;
+# with the default OUT_DIR (docs/figures) also the generated part of
+# docs/performance.md, otherwise OUT_DIR/perf-scaling.md.
+# Usage: bash scripts/scaling-study.sh [BUILD_DIR] [OUT_DIR] [--max N] [--no-rbc-run] [rkpm_scaling options...]
+#   BUILD_DIR defaults to build/, --max to 1000000 (hours on 2 cores; 100000 takes minutes).
+#   --no-rbc-run skips the RBC relaxation (about 40 min at 1 thread on the seed's cell).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=$here/build
+out=$here/docs/figures
+[ $# -gt 0 ] && [[ $1 != --* ]] && { build=$1; shift; }
+[ $# -gt 0 ] && [[ $1 != --* ]] && { out=$1; shift; }
+max=1000000
+rbc_run=1
+extra=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --max) max=$2; shift 2 ;;
+    --max=*) max=${1#--max=}; shift ;;
+    --no-rbc-run) rbc_run=0; shift ;;
+    *) extra+=("$1"); shift ;;
+  esac
+done
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+doc=$here/docs/performance.md
+update_doc=0
+[ "$out" = "$here/docs/figures" ] && update_doc=1
+
+command -v gnuplot >/dev/null || { echo "scaling-study.sh: gnuplot is required for the plots" >&2; exit 1; }
+if [ $update_doc = 1 ]; then
+  grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||
+    { echo "scaling-study.sh: $doc lacks the BEGIN/END GENERATED markers" >&2; exit 1; }
+fi
+
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target rkpm_scaling rkpm -j"$(nproc)"
+program=$build/bench/rkpm_scaling
+[ -x "$program" ] || { echo "scaling-study.sh: $program was not built (is Google Benchmark installed?)" >&2; exit 1; }
+
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+command_text="bash scripts/scaling-study.sh --max $max${extra[*]:+ ${extra[*]}}"
+# What was measured: the commit, and whether the working tree differed from it.
+revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
+git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
+
+# The default RBC relaxation, as command (a) of the README runs it but with 2 threads.
+rbc_args=()
+if [ $rbc_run = 1 ]; then
+  echo "RBC relaxation (examples/rbc/rbc.toml, 2 threads): running"
+  OMP_NUM_THREADS=2 "$build/src/app/rkpm" run "$here/examples/rbc/rbc.toml" --out "$scratch/rbc" --quiet ||
+    echo "RBC relaxation: exit $?"
+  if [ -f "$scratch/rbc/summary.json" ]; then
+    read -r wall steps status < <(python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1]))
+print(s["wall_time"], s["steps"], s["status"].replace(" ", "_"))' "$scratch/rbc/summary.json")
+    rbc_args=(--rbc-relaxation-wall "$wall" --rbc-relaxation-steps "$steps" --rbc-relaxation-status "${status//_/ }")
+  fi
+else
+  command_text+=" --no-rbc-run"
+fi
+
+csv=$out/perf-scaling.csv
+table=$out/perf-scaling.md
+[ $update_doc = 1 ] && table=$scratch/table.md
+"$program" --max "$max" --csv "$csv" --markdown "$table" --rbc-scene "$here/examples/rbc/rbc.toml" \
+  --command "$command_text" --source-revision "$revision" "${rbc_args[@]}" "${extra[@]}"
+
+if [ $update_doc = 1 ]; then
+  # Replace the text between the markers with the fresh tables.
+  awk -v table="$table" '
+    /<!-- BEGIN GENERATED/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
+    /<!-- END GENERATED/   { skip = 0 }
+    !skip                  { print }' "$doc" > "$scratch/doc.md"
+  cp "$scratch/doc.md" "$doc"
+fi
+
+gnuplot <<GNUPLOT
+set datafile separator ","
+set terminal png size 900,600 font ",11" noenhanced
+set logscale xy
+set grid
+set key top left
+set xlabel "particles N"
+geometries = "block sphere shell"
+titles = "'Mooney-Rivlin block' 'LCE sphere' 'RBC shell'"
+pick(g, value) = strcol("geometry") eq g && strcol("status") eq "ok" ? value : NaN
+
+set output "$out/perf-step-vs-particles.png"
+set ylabel "time per step [s]"
+plot for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("step_2t_s"))) \
+       with linespoints lw 2 pt 7 lc i title word(titles,i)." (2 threads)", \
+     for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("step_1t_s"))) \
+       with linespoints lw 1 dt 2 pt 6 lc i title word(titles,i)." (1 thread)"
+
+set output "$out/perf-setup-vs-particles.png"
+set ylabel "set-up: build_world + initialize [s]"
+plot for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("setup_total_s"))) \
+       with linespoints lw 2 pt 7 lc i title word(titles,i), \
+     2.0 * x / 1e5 dt 3 lc rgb "gray40" title "target: 2 s per 100k particles"
+
+set output "$out/perf-memory-vs-particles.png"
+set ylabel "bytes per particle"
+plot for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("peak_bytes_per_particle"))) \
+       with linespoints lw 2 pt 7 lc i title word(titles,i)." (peak RSS)", \
+     for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("array_bytes_per_particle"))) \
+       with linespoints lw 1 dt 2 pt 6 lc i title word(titles,i)." (Body arrays)", \
+     2048 dt 3 lc rgb "gray40" title "target: 2 KB per particle"
+GNUPLOT
+[ $update_doc = 1 ] && table=$doc
+echo "wrote $csv, $out/perf-{step,setup,memory}-vs-particles.png and $table"
