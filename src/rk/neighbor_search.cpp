@@ -3,6 +3,7 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace rkpm::rk {
 
@@ -40,6 +41,20 @@ void NeighborSearch::query(const Vec3& x, double radius, std::vector<std::pair<I
   params.sorted = false;
   tree_->index.radiusSearch(x.data(), radius * radius, result, params);  // squared radius
   std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+std::pair<Index, double> NeighborSearch::nearest(const Vec3& x,
+                                                 std::vector<std::pair<Index, double>>& scratch) const {
+  Index id = 0;
+  double d2 = 0.0;
+  tree_->index.knnSearch(x.data(), 1, &id, &d2);
+  // Collect every point at that distance (exact ties) and keep the lowest id. The radius
+  // query is strict (< r^2), hence the margin; a zero distance needs a positive radius.
+  query(x, std::max(std::sqrt(d2) * (1.0 + 1e-9), 1e-150), scratch);
+  std::pair<Index, double> best{id, d2};
+  for (const auto& f : scratch)
+    if (f.second < best.second || (f.second == best.second && f.first < best.first)) best = f;
+  return best;
 }
 
 }  // namespace rkpm::rk

@@ -24,21 +24,17 @@ std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& 
     if (cloud.surface_mask[i] & far_bit) far_points.push_back(cloud.X[i]);
   }
   const rk::NeighborSearch near_search(near_points), far_search(far_points);
-  std::vector<std::pair<Index, double>> found;
-  auto nearest2 = [&](const rk::NeighborSearch& search, const Vec3& x, double r) {
-    do {
-      search.query(x, r, found);
-      r *= 2.0;
-    } while (found.empty());
-    double best = found.front().second;
-    for (const auto& f : found) best = std::min(best, f.second);
-    return best;
-  };
   std::vector<double> side(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const double start = 1e-3 * (cloud.X[i].norm() + 1e-30);
-    const double dn = nearest2(near_search, cloud.X[i], start), df = nearest2(far_search, cloud.X[i], start);
-    side[i] = std::abs(dn - df) <= 1e-12 * (dn + df) ? 0.5 : (dn < df ? 1.0 : 0.0);
+#pragma omp parallel
+  {
+    std::vector<std::pair<Index, double>> found;
+#pragma omp for schedule(static)
+    for (std::int64_t k = 0; k < static_cast<std::int64_t>(cloud.size()); ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      const double dn = near_search.nearest(cloud.X[i], found).second;
+      const double df = far_search.nearest(cloud.X[i], found).second;
+      side[i] = std::abs(dn - df) <= 1e-12 * (dn + df) ? 0.5 : (dn < df ? 1.0 : 0.0);
+    }
   }
   return side;
 }

@@ -110,25 +110,18 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
     std::vector<Vec3> surface;
     for (Index b : cloud.boundary_particles) surface.push_back(cloud.X[b]);
     const rk::NeighborSearch search(surface);
-    std::vector<std::pair<Index, double>> found;
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto bi = cloud.boundary_index[i];
-      Vec3 normal;
-      if (bi >= 0) {
-        normal = cloud.boundary_normal[bi];
-      } else {
-        // Nearest surface particle: grow the radius until one is found.
-        double r = body.spacing[i];
-        do {
-          search.query(cloud.X[i], r, found);
-          r *= 2.0;
-        } while (found.empty());
-        auto best = found.front();
-        for (const auto& f : found)
-          if (f.second < best.second) best = f;
-        normal = cloud.boundary_normal[best.first];
+#pragma omp parallel
+    {
+      std::vector<std::pair<Index, double>> found;
+#pragma omp for schedule(static)
+      for (std::int64_t k = 0; k < static_cast<std::int64_t>(n); ++k) {
+        const auto i = static_cast<std::size_t>(k);
+        const auto bi = cloud.boundary_index[i];
+        // Inside: the normal of the nearest surface particle (the lowest id among equals).
+        const Vec3 normal = bi >= 0 ? cloud.boundary_normal[bi]
+                                    : cloud.boundary_normal[search.nearest(cloud.X[i], found).first];
+        dir.h[i] = normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
       }
-      dir.h[i] = normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
     }
   }
   dir.h0 = dir.h;

@@ -2,6 +2,7 @@
 
 #include "rkpm/io/json.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rkpm::sim {
@@ -19,48 +20,69 @@ Mat3 cofactor(const Mat3& F) {
 
 VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double bulk, double target)
     : body_(body), bulk_(bulk), target_(target) {
+  // Group the chosen facets by the cell that owns them (the boundary quadrature lists a
+  // cell's facets together) and fold each cell's facets into one row:
+  //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
   const auto& q = body.boundary;
-  for (std::size_t f = 0; f < q.point.size(); ++f)
-    if (surface_bit == 0u || (q.surface_mask[f] & surface_bit)) facets_.push_back(f);
-  area_.resize(facets_.size());
-  cone_.resize(facets_.size());
-  // The shape-function rows of the chosen facets, transposed once: the force becomes a
-  // gather per particle. Rows are numbered by position in facets_.
-  std::vector<Index> row_offset(facets_.size() + 1, 0), col;
-  for (std::size_t i = 0; i < facets_.size(); ++i) {
-    const std::size_t f = facets_[i];
-    for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) {
-      col.push_back(q.col[k]);
-      psi_.push_back(q.psi[k]);
+  std::vector<Vec3> value(body.size(), Vec3::Zero());
+  std::vector<char> used(body.size(), 0);
+  std::vector<Index> touched;
+  row_offset_.push_back(0);
+  for (std::size_t f = 0; f < q.point.size();) {
+    const Index owner = q.owner[f];
+    Mat3 C = Mat3::Zero();
+    for (; f < q.point.size() && q.owner[f] == owner; ++f) {
+      if (surface_bit != 0u && !(q.surface_mask[f] & surface_bit)) continue;
+      C.noalias() += q.point[f] * q.area[f].transpose();
+      for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) {
+        const Index I = q.col[k];
+        if (!used[I]) {
+          used[I] = 1;
+          touched.push_back(I);
+        }
+        value[I] += q.psi[k] * q.area[f];
+      }
     }
-    row_offset[i + 1] = static_cast<Index>(col.size());
+    if (touched.empty()) continue;
+    std::sort(touched.begin(), touched.end());
+    for (Index I : touched) {
+      col_.push_back(I);
+      B_.push_back(value[I]);
+      value[I].setZero();
+      used[I] = 0;
+    }
+    touched.clear();
+    owner_.push_back(owner);
+    C_.push_back(C);
+    row_offset_.push_back(static_cast<Index>(col_.size()));
   }
-  by_particle_.build(row_offset, col, static_cast<Index>(body.size()));
+  cofactor_.resize(owner_.size());
+  cone_.resize(owner_.size());
+  by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
   const double v = measure_signed_volume();
   sign_ = v < 0.0 ? -1.0 : 1.0;
   initial_ = volume_ = std::abs(v);
 }
 
 double VolumeConstraint::measure_signed_volume() {
-  const auto& q = body_.boundary;
-  const auto m = static_cast<std::int64_t>(facets_.size());
+  // V = (1/3) sum_L cof(F_L) : (C_L + sum_I d_I (x) B_LI), the facet sum x_f . a_f regrouped.
+  const auto m = static_cast<Index>(owner_.size());
 #pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < m; ++i) {
-    const std::size_t f = facets_[static_cast<std::size_t>(i)];
-    const Vec3 area = cofactor(body_.F[q.owner[f]]) * q.area[f];
-    Vec3 x = q.point[f];
-    for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) x += q.psi[k] * body_.d[q.col[k]];
-    area_[static_cast<std::size_t>(i)] = area;
-    cone_[static_cast<std::size_t>(i)] = x.dot(area) / 3.0;
+  for (Index r = 0; r < m; ++r) {
+    Mat3 G = C_[r];
+    for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) G.noalias() += body_.d[col_[k]] * B_[k].transpose();
+    cofactor_[r] = cofactor(body_.F[owner_[r]]);
+    cone_[r] = cofactor_[r].cwiseProduct(G).sum() / 3.0;
   }
   double v = 0.0;
-  for (double c : cone_) v += c;  // in facet order: deterministic
+  for (double c : cone_) v += c;  // in row order: deterministic
   return v;
 }
 
 void VolumeConstraint::add_forces(World&) {
   volume_ = sign_ * measure_signed_volume();
   pressure_ = -bulk_ * std::log(volume_ / (target_ * initial_));
+  // f_I = p s sum_L cof(F_L) B_LI: a gather per particle over the transposed rows.
   const auto& T = by_particle_;
   const double scale = pressure_ * sign_;
   const auto n = static_cast<Index>(body_.size());
@@ -68,7 +90,7 @@ void VolumeConstraint::add_forces(World&) {
   for (Index I = 0; I < n; ++I) {
     if (T.offset[I] == T.offset[I + 1]) continue;
     Vec3 push = Vec3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push += psi_[T.entry[t]] * area_[T.row[t]];
+    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push.noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
     body_.force[I] += scale * push;
   }
 }

@@ -27,6 +27,11 @@ class NeighborSearch {
   // `scratch` is reused between calls to avoid allocation.
   void query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const;
 
+  // The nearest point to x and its squared distance; among points at exactly that
+  // distance, the lowest id (so the answer does not depend on the tree's layout).
+  // `scratch` is reused between calls. Requires at least one point.
+  std::pair<Index, double> nearest(const Vec3& x, std::vector<std::pair<Index, double>>& scratch) const;
+
   const std::vector<Vec3>& points() const { return points_; }
 
  private:

@@ -17,8 +17,9 @@
 // of a scene with this term closes only to that order.
 // The term is declared per scene ([[term]] type = "volume_constraint"); a body
 // without it has no enclosed fluid at all.
-// Cost: both sums run in parallel over the facets; the force is gathered per particle
-// through the transposed facet list built once, so no two threads write one particle.
+// Cost: the facets are folded per owning cell once (the sums are linear in the facet
+// terms), both sums then run in parallel over cells, and the force is gathered per
+// particle through the transposed rows, so no two threads write one particle.
 #pragma once
 
 #include "rkpm/sim/world.hpp"
@@ -41,15 +42,19 @@ class VolumeConstraint final : public Term {
   double pressure() const { return pressure_; }        // [Pa]
 
  private:
-  // Current area vectors a_f of the facets (into area_) and the signed volume.
+  // The signed volume at the current d and F (also stores each row's cofactor).
   double measure_signed_volume();
 
   Body& body_;
-  std::vector<std::size_t> facets_;  // boundary-quadrature points on the surface
-  std::vector<Vec3> area_;           // a_f = J F^-T A_f of each facet, at the last measure
-  std::vector<double> cone_;         // x_f . a_f / 3 of each facet (summed in facet order)
-  std::vector<double> psi_;          // Psi_I(X_f) of the chosen facets, rows in facets_ order
-  rk::CsrTranspose by_particle_;     // particle I -> (entry in psi_, facet row) pairs
+  // The facets on the surface, folded per owning cell L (one row each), so that a step
+  // reads each (cell, particle) pair once instead of once per facet:
+  //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
+  std::vector<Index> owner_, row_offset_, col_;
+  std::vector<Vec3> B_;
+  std::vector<Mat3> C_;
+  std::vector<Mat3> cofactor_;       // J F^-T of each row's cell, at the last measure
+  std::vector<double> cone_;         // each row's share of the volume (summed in row order)
+  rk::CsrTranspose by_particle_;     // particle I -> (entry, row) pairs of B
   double bulk_, target_;
   double sign_ = 1.0, initial_ = 0.0, volume_ = 0.0, pressure_ = 0.0;
 };
