@@ -1,7 +1,5 @@
 #include "footprint.hpp"
 
-#include "optional_members.hpp"
-
 #include <variant>
 
 namespace rkpm::bench {
@@ -14,11 +12,19 @@ std::size_t bytes(const std::vector<T>& v) {
 }
 
 std::size_t gradient_bytes(const rk::GradientOperator& g) {
-  return bytes(g.row_offset) + bytes(g.col) + bytes(g.grad) + bytes(g.weight) + transpose_bytes(g);
+  return bytes(g.row_offset) + bytes(g.col) + bytes(g.grad) + bytes(g.weight);
 }
 
+// The rows of Psi_I(X_L): all the stabilization reads.
+std::size_t interpolation_row_bytes(const rk::NodalInterpolation& n) {
+  return bytes(n.row_offset) + bytes(n.col) + bytes(n.psi);
+}
+
+// Stored: the rows and the transpose (offset, entry and row indices) that the contact
+// and surface-tension terms use.
 std::size_t interpolation_bytes(const rk::NodalInterpolation& n) {
-  return bytes(n.row_offset) + bytes(n.col) + bytes(n.psi) + transpose_bytes(n);
+  const auto& t = n.transpose;
+  return interpolation_row_bytes(n) + bytes(t.offset) + bytes(t.entry) + bytes(t.row);
 }
 
 std::size_t material_bytes(const sim::Material& material) {
@@ -43,7 +49,7 @@ Footprint footprint(const sim::Body& b) {
                 (b.rk ? bytes(b.rk->support_radius()) : 0);
   f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
             bytes(b.mass) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
-            material_bytes(b.material) + scatter_bytes(b);
+            material_bytes(b.material) + b.force_scatter.bytes();
   if (b.director) {
     const auto& d = *b.director;
     f.state += bytes(d.h) + bytes(d.h0) + bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence) +
@@ -62,9 +68,8 @@ Footprint footprint(const sim::World& world) {
 
 Traffic internal_force_traffic(const sim::Body& b) {
   Traffic t;
-  // F_L = sum_I x_I (x) b_I(X_L) and f_I = sum_L V_L P_L b_I(X_L): the operator (and
-  // its transpose where one is stored), each array once. Scatter buffers are the
-  // kernel's own scratch, not compulsory traffic.
+  // F_L = sum_I x_I (x) b_I(X_L) and f_I = sum_L V_L P_L b_I(X_L): the operator's rows,
+  // each array once. Scatter buffers are the kernel's own scratch, not compulsory traffic.
   t.operators = gradient_bytes(b.gradient);
   t.state_read = bytes(b.x);
   t.state_written = bytes(b.F) + bytes(b.P) + bytes(b.force);
@@ -80,8 +85,8 @@ Traffic internal_force_traffic(const sim::Body& b) {
     }
   }
   if (b.stabilization.active()) {
-    // r = (I - N) d, then f -= (I - N)^T W r: the interpolation operator (and transpose).
-    t.operators += interpolation_bytes(b.interpolation) + bytes(b.stabilization.weight);
+    // r = (I - N) d, then f -= (I - N)^T W r, both from the rows of N.
+    t.operators += interpolation_row_bytes(b.interpolation) + bytes(b.stabilization.weight);
     t.state_read += bytes(b.d);
     t.state_written += bytes(b.stabilization.residual);
   }

@@ -32,24 +32,14 @@ double median(std::vector<double> v) {
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-// The RK settings build_world derives from [body.rk]; repeated here because the split
-// re-runs build_world's stages through the public rk:: functions.
-rk::RKSettings rk_settings(const scene::ParamSet& p) {
-  rk::RKSettings s;
-  s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
-  s.support = p.real("support");
-  s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
-  return s;
-}
-
 // build_world's RK stages for every body, timed one by one (2 threads, as the run).
 void time_stages(const scene::Scene& scene, SizeResult& r) {
   for (const auto& spec : scene.bodies) {
     particles::Cloud cloud;
     r.cloud_s += seconds_of([&] { cloud = sim::build_cloud(spec); });
     std::unique_ptr<rk::RKApproximation> approx;
-    r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk)); });
-    const auto scheme = spec.rk.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
+    r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, sim::rk_settings(spec.rk)); });
+    const auto scheme = sim::integration_scheme(spec.rk);
     r.gradient_s += seconds_of([&] { (void)rk::build_gradient_operator(cloud, *approx, scheme); });
     r.interpolation_s += seconds_of([&] { (void)rk::build_nodal_interpolation(cloud, *approx); });
     r.boundary_s += seconds_of([&] { (void)rk::build_boundary_quadrature(cloud, *approx); });

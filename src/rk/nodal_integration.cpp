@@ -254,13 +254,7 @@ void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& 
   const Index n = op.n_rows();
   F.resize(n);
 #pragma omp parallel for schedule(static)
-  for (Index L = 0; L < n; ++L) {
-    Mat3 f = Mat3::Zero();
-    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
-      f.noalias() += x[op.col[k]] *
-                     op.grad[k].transpose();
-    F[L] = f;
-  }
+  for (Index L = 0; L < n; ++L) F[L] = row_gradient(op, x, L);
 }
 
 void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f) {

@@ -22,9 +22,7 @@ double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, c
   // r_L = d_L - sum_I Psi_I(X_L) d_I, stored pre-multiplied by W_L.
 #pragma omp parallel for schedule(static) reduction(+ : energy)
   for (Index L = 0; L < n; ++L) {
-    Vec3 interpolated = Vec3::Zero();
-    for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) interpolated += N.psi[k] * d[N.col[k]];
-    const Vec3 r = d[L] - interpolated;
+    const Vec3 r = interpolation_residual(N, d, L);
     energy += 0.5 * s.weight[L] * r.squaredNorm();
     s.residual[L] = s.weight[L] * r;
   }

@@ -65,13 +65,9 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
       const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-      Mat3 F = Mat3::Zero();
-      for (Index k = k0; k < k1; ++k) F.noalias() += body.x[op.col[k]] * op.grad[k].transpose();
-      Mat3 grad_h = Mat3::Zero();
-      if (frank) {
-        for (Index k = k0; k < k1; ++k) grad_h.noalias() += dir->h[op.col[k]] * op.grad[k].transpose();
-        dir->grad_h[L] = grad_h;
-      }
+      const Mat3 F = rk::row_gradient(op, body.x, L);
+      const Mat3 grad_h = frank ? rk::row_gradient(op, dir->h, L) : Mat3::Zero();
+      if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
@@ -83,9 +79,7 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
         for (Index k = k0; k < k1; ++k) div[op.col[k]].noalias() += w * (flux * op.grad[k]);
       }
       if (stabilized) {
-        Vec3 interpolated = Vec3::Zero();
-        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) interpolated += N.psi[k] * body.d[N.col[k]];
-        const Vec3 r = body.d[L] - interpolated;
+        const Vec3 r = rk::interpolation_residual(N, body.d, L);
         stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
         const Vec3 wr = stab.weight[L] * r;
         stab.residual[L] = wr;

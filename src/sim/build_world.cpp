@@ -25,14 +25,6 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
 
-rk::RKSettings rk_settings(const scene::ParamSet& p) {
-  rk::RKSettings s;
-  s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
-  s.support = p.real("support");
-  s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
-  return s;
-}
-
 Vec3 centroid(const particles::Cloud& c) {
   Vec3 sum = Vec3::Zero();
   double v = 0.0;
@@ -206,7 +198,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 
   try {
     body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
-    const auto scheme = spec.rk.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
+    const auto scheme = integration_scheme(spec.rk);
     body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme);
     body->boundary = rk::build_boundary_quadrature(cloud, *body->rk);
     body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk);
@@ -274,6 +266,18 @@ particles::Cloud build_cloud(const scene::BodySpec& spec) {
                         },
                     },
                     scene::cloud_recipe(spec));
+}
+
+rk::RKSettings rk_settings(const scene::ParamSet& p) {
+  rk::RKSettings s;
+  s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
+  s.support = p.real("support");
+  s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
+  return s;
+}
+
+rk::Integration integration_scheme(const scene::ParamSet& p) {
+  return p.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
 }
 
 IntegratorSettings integrator_settings(const scene::Scene& scene) {

@@ -83,6 +83,14 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk);
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk);
 
+// sum_I v_I (x) b_I(X_L) over row L: F_L from positions, Grad_X h from directors, dF/dt
+// from velocities. The one gather every per-point gradient uses.
+inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {
+  Mat3 g = Mat3::Zero();
+  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) g.noalias() += v[op.col[k]] * op.grad[k].transpose();
+  return g;
+}
+
 // F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).
 void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& x, std::vector<Mat3>& F);
 

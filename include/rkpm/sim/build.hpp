@@ -26,4 +26,8 @@ particles::Cloud build_cloud(const scene::BodySpec& body);
 
 IntegratorSettings integrator_settings(const scene::Scene& scene);
 
+// The RK approximation and the nodal-integration scheme a body's [body.rk] table asks for.
+rk::RKSettings rk_settings(const scene::ParamSet& rk_table);
+rk::Integration integration_scheme(const scene::ParamSet& rk_table);
+
 }  // namespace rkpm::sim
