@@ -43,17 +43,14 @@ void surface_volume_area(const particles::Cloud& cloud, const std::vector<Vec3>&
   }
 }
 
-ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>& positions,
-                          const std::string& surface, int bins) {
-  const std::uint32_t bit = cloud.surface_bit(surface);
-  if (bit == 0u) throw std::invalid_argument("shape report: the cloud has no surface named '" + surface + "'");
-  ShapeReport s;
-  surface_volume_area(cloud, positions, surface, s.volume, s.area);
-  s.reduced_volume = s.volume / (4.0 * kPi / 3.0 * std::pow(s.area / (4.0 * kPi), 1.5));
+namespace {
 
-  // Current outward normals of the surface particles (area-weighted face normals).
-  std::vector<Vec3> normal(cloud.size(), Vec3::Zero());
-  std::vector<char> on(cloud.size(), 0);
+// Current normals of a surface's particles (sums of area-weighted face normals,
+// outward from the solid as the faces are stored) and which particles are on it.
+void surface_normals(const particles::Cloud& cloud, const std::vector<Vec3>& positions, std::uint32_t bit,
+                     std::vector<Vec3>& normal, std::vector<char>& on) {
+  normal.assign(cloud.size(), Vec3::Zero());
+  on.assign(cloud.size(), 0);
   for (const auto& face : cloud.boundary_faces) {
     if (!face_on(cloud, face, bit)) continue;
     const Vec3& p0 = positions[face.nodes[0]];
@@ -65,6 +62,68 @@ ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>
       on[face.nodes[k]] = 1;
     }
   }
+}
+
+// Sums of the axial position per (radial bin, sector) for the top and the bottom sheet
+// of one surface. `top_sign` = +1: a particle whose normal points up is on the top
+// sheet (outer surface); -1: pointing down (inner surface, whose normal points into
+// the cavity).
+struct SheetBins {
+  std::vector<double> top_sum, bot_sum;
+  std::vector<int> top_n, bot_n;
+  // Mean axial position of each sheet over the sectors of bin b; false if a sheet is empty.
+  bool bin(int b, double& top, double& bottom) const {
+    double ts = 0, bs = 0;
+    int tn = 0, bn = 0;
+    for (int k = b * kSectors; k < (b + 1) * kSectors; ++k) {
+      ts += top_sum[k];
+      tn += top_n[k];
+      bs += bot_sum[k];
+      bn += bot_n[k];
+    }
+    if (tn == 0 || bn == 0) return false;
+    top = ts / tn;
+    bottom = bs / bn;
+    return true;
+  }
+};
+
+SheetBins bin_sheets(const std::vector<Vec3>& positions, const std::vector<Vec3>& normal,
+                     const std::vector<char>& on, double top_sign, const Vec3& centre, double R, int nb) {
+  SheetBins s{std::vector<double>(nb * kSectors, 0.0), std::vector<double>(nb * kSectors, 0.0),
+              std::vector<int>(nb * kSectors, 0), std::vector<int>(nb * kSectors, 0)};
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!on[i]) continue;
+    const Vec3 p = positions[i] - centre;
+    const double r = std::hypot(p.x(), p.y());
+    const int b = std::min(nb - 1, static_cast<int>(r / R * nb));
+    const double angle = std::atan2(p.y(), p.x()) + kPi;
+    const int sector = std::min(kSectors - 1, static_cast<int>(angle / (2.0 * kPi) * kSectors));
+    const int k = b * kSectors + sector;
+    if (top_sign * normal[i].z() > 0.0) {
+      s.top_sum[k] += p.z();
+      ++s.top_n[k];
+    } else {
+      s.bot_sum[k] += p.z();
+      ++s.bot_n[k];
+    }
+  }
+  return s;
+}
+
+}  // namespace
+
+ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>& positions,
+                          const std::string& surface, int bins, const std::string& inner) {
+  const std::uint32_t bit = cloud.surface_bit(surface);
+  if (bit == 0u) throw std::invalid_argument("shape report: the cloud has no surface named '" + surface + "'");
+  ShapeReport s;
+  surface_volume_area(cloud, positions, surface, s.volume, s.area);
+  s.reduced_volume = s.volume / (4.0 * kPi / 3.0 * std::pow(s.area / (4.0 * kPi), 1.5));
+
+  std::vector<Vec3> normal;
+  std::vector<char> on;
+  surface_normals(cloud, positions, bit, normal, on);
   Vec3 centre = Vec3::Zero();
   int count = 0;
   for (std::size_t i = 0; i < cloud.size(); ++i)
@@ -78,48 +137,49 @@ ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>
     if (on[i]) R = std::max(R, std::hypot(positions[i].x() - centre.x(), positions[i].y() - centre.y()));
   s.diameter = 2.0 * R;
 
-  // Per bin and sector: sums of z for the top (n_z > 0) and bottom sheets.
   const int nb = bins;
-  std::vector<double> top_sum(nb * kSectors, 0.0), bot_sum(nb * kSectors, 0.0);
-  std::vector<int> top_n(nb * kSectors, 0), bot_n(nb * kSectors, 0);
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (!on[i]) continue;
-    const Vec3 p = positions[i] - centre;
-    const double r = std::hypot(p.x(), p.y());
-    const int b = std::min(nb - 1, static_cast<int>(r / R * nb));
-    const double angle = std::atan2(p.y(), p.x()) + kPi;
-    const int sector = std::min(kSectors - 1, static_cast<int>(angle / (2.0 * kPi) * kSectors));
-    const int k = b * kSectors + sector;
-    if (normal[i].z() > 0.0) {
-      top_sum[k] += p.z();
-      ++top_n[k];
-    } else {
-      bot_sum[k] += p.z();
-      ++bot_n[k];
-    }
+  const SheetBins outer = bin_sheets(positions, normal, on, +1.0, centre, R, nb);
+  SheetBins inner_bins;
+  const std::uint32_t inner_bit = inner.empty() ? 0u : cloud.surface_bit(inner);
+  s.has_inner_surface = inner_bit != 0u;
+  if (s.has_inner_surface) {
+    std::vector<Vec3> inner_normal;
+    std::vector<char> inner_on;
+    surface_normals(cloud, positions, inner_bit, inner_normal, inner_on);
+    inner_bins = bin_sheets(positions, inner_normal, inner_on, -1.0, centre, R, nb);
   }
+
   double rms = 0.0;
   int rms_n = 0;
+  bool first_gap = true;
   for (int b = 0; b < nb; ++b) {
-    double ts = 0, bs = 0;
-    int tn = 0, bn = 0;
-    for (int k = b * kSectors; k < (b + 1) * kSectors; ++k) {
-      ts += top_sum[k];
-      tn += top_n[k];
-      bs += bot_sum[k];
-      bn += bot_n[k];
-    }
-    if (tn == 0 || bn == 0) continue;
+    double top = 0.0, bottom = 0.0;
+    if (!outer.bin(b, top, bottom)) continue;
     const double r = (b + 0.5) * R / nb;
     s.r.push_back(r);
-    s.top.push_back(ts / tn);
-    s.bottom.push_back(bs / bn);
-    s.thickness.push_back(ts / tn - bs / bn);
+    s.top.push_back(top);
+    s.bottom.push_back(bottom);
+    s.thickness.push_back(top - bottom);
     s.evans_fung.push_back(evans_fung_thickness(r, s.diameter));
     rms += std::pow(s.thickness.back() - s.evans_fung.back(), 2);
     ++rms_n;
+    double inner_top = 0.0, inner_bottom = 0.0;
+    const bool has = s.has_inner_surface && inner_bins.bin(b, inner_top, inner_bottom);
+    s.has_inner.push_back(has ? 1 : 0);
+    s.inner_top.push_back(has ? inner_top : 0.0);
+    s.inner_bottom.push_back(has ? inner_bottom : 0.0);
+    if (!has) continue;
+    const double gap = inner_top - inner_bottom;
+    if (first_gap) {
+      s.inner_gap_centre = gap;
+      s.inner_gap_min = gap;
+      s.wall_centre = 0.5 * ((top - inner_top) + (inner_bottom - bottom));
+      first_gap = false;
+    }
+    s.inner_gap_min = std::min(s.inner_gap_min, gap);
   }
   if (s.thickness.empty()) throw std::runtime_error("shape report: no part of the surface has both a top and a bottom");
+  s.walls_crossed = s.has_inner_surface && !first_gap && s.inner_gap_min < 0.0;
   s.rms_vs_evans_fung = std::sqrt(rms / rms_n) / s.diameter;
   s.h_min = s.thickness.front();
   const auto it = std::max_element(s.thickness.begin(), s.thickness.end());
@@ -134,11 +194,12 @@ ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>
     if (j == s.r.end()) continue;
     const double mean = s.thickness[static_cast<std::size_t>(j - s.r.begin())];
     for (int k = b * kSectors; k < (b + 1) * kSectors; ++k) {
-      if (top_n[k] == 0 || bot_n[k] == 0) continue;
-      s.axial_asymmetry = std::max(s.axial_asymmetry, std::abs(top_sum[k] / top_n[k] - bot_sum[k] / bot_n[k] - mean) / s.h_max);
+      if (outer.top_n[k] == 0 || outer.bot_n[k] == 0) continue;
+      s.axial_asymmetry = std::max(s.axial_asymmetry, std::abs(outer.top_sum[k] / outer.top_n[k] -
+                                                               outer.bot_sum[k] / outer.bot_n[k] - mean) / s.h_max);
     }
   }
-  s.biconcave = s.h_min / s.h_max <= 0.5 && s.r_hmax_over_R >= 0.55 && s.r_hmax_over_R <= 0.85;
+  s.biconcave = s.h_min / s.h_max <= 0.5 && s.r_hmax_over_R >= 0.55 && s.r_hmax_over_R <= 0.85 && !s.walls_crossed;
   return s;
 }
 

@@ -4,6 +4,7 @@
 #include "rkpm/sim/contact.hpp"
 #include "rkpm/sim/surface_tension.hpp"
 #include "rkpm/sim/volume_constraint.hpp"
+#include "rkpm/sim/wall_contact.hpp"
 
 #include <fmt/format.h>
 
@@ -96,6 +97,19 @@ std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
     s.contact_gap = p.real("contact_gap");
     try {
       return std::make_unique<Contact>(*a, *b, s);
+    } catch (const std::invalid_argument& e) {
+      throw SetupError(fmt::format("{}:{}: [term] {}", p.file(), p.table_line(), e.what()));
+    }
+  }
+  if (type == "wall_contact") {
+    WallContactSettings s;
+    s.surface = p.text("surface");
+    s.distance = p.real("distance");
+    s.pressure = p.real("pressure");
+    s.exclusion = p.real("exclusion");
+    s.skin = p.real("skin");
+    try {
+      return std::make_unique<WallContact>(body_named("body"), s);
     } catch (const std::invalid_argument& e) {
       throw SetupError(fmt::format("{}:{}: [term] {}", p.file(), p.table_line(), e.what()));
     }

@@ -7,6 +7,13 @@
 // their outward normal's axial component into a top and a bottom sheet, binned by
 // distance r from the symmetry axis (z through the centroid), and the thickness is
 // h(r) = top(r) - bottom(r).
+//
+// A shell with an inner surface (named "inner") also gets the same profile of that
+// surface, split by the sign of the axial component of its normal pointing into the
+// cavity: the gap between its top and bottom sheets is the thickness of the enclosed
+// fluid. The model has no self-contact between the two walls of one body, so a dimple
+// deep enough to close this gap would let the walls pass through each other; a
+// negative gap marks such a shape as not physical (`walls_crossed`).
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -32,13 +39,22 @@ struct ShapeReport {
   double area = 0.0;              // of the outer surface [m^2]
   double reduced_volume = 0.0;    // V / (4 pi / 3 (A / 4 pi)^(3/2)); Evans-Fung: 0.644
   double rms_vs_evans_fung = 0.0; // RMS of h - T_EF over the bins, as a fraction of D
-  bool biconcave = false;         // h_min / h_max <= 0.5 and r(h_max)/R in [0.55, 0.85]
+  // Inner surface (shells only; empty / zero otherwise), on the bins of `r`:
+  std::vector<double> inner_top, inner_bottom;  // axial position of its sheets [m]
+  std::vector<char> has_inner;    // 1 where the bin holds both inner sheets
+  bool has_inner_surface = false;
+  double inner_gap_centre = 0.0;  // fluid thickness on the axis (first bin with both inner sheets) [m]
+  double inner_gap_min = 0.0;     // smallest fluid thickness over the bins [m]
+  double wall_centre = 0.0;       // wall thickness on the axis, mean of top and bottom wall [m]
+  bool walls_crossed = false;     // inner_gap_min < 0
+  bool biconcave = false;         // h_min / h_max <= 0.5, r(h_max)/R in [0.55, 0.85], walls not crossed
 };
 
 // `positions`: current (physical) positions of all particles of the cloud; the outer
-// surface is the named surface `surface` of the cloud (its boundary faces).
+// surface is the named surface `surface` of the cloud (its boundary faces); the
+// surface named `inner`, if the cloud has one, gives the fluid gap.
 ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>& positions,
-                          const std::string& surface, int bins = 32);
+                          const std::string& surface, int bins = 32, const std::string& inner = "inner");
 
 // Evans-Fung thickness [m] at radius r for a cell of diameter D (the profile scaled).
 double evans_fung_thickness(double r, double diameter);

@@ -15,7 +15,7 @@ ParamTable terms::term_table(std::string type, std::string help) {
 
 std::vector<ParamTable> tables::terms() {
   return {terms::body_force(), terms::surface_pressure(), terms::volume_constraint(),
-          terms::surface_tension(), terms::contact()};
+          terms::surface_tension(), terms::contact(), terms::wall_contact()};
 }
 
 }  // namespace rkpm::scene

@@ -15,5 +15,6 @@ ParamTable surface_pressure();
 ParamTable volume_constraint();
 ParamTable surface_tension();
 ParamTable contact();
+ParamTable wall_contact();
 
 }  // namespace rkpm::scene::terms

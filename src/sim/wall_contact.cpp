@@ -1,0 +1,143 @@
+#include "rkpm/sim/wall_contact.hpp"
+
+#include "rkpm/io/json.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+namespace {
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Physical position p_J = X_J + sum_I Psi_I(X_J) d_I (X + d without RK operators).
+Vec3 physical_point(const Body& body, Index J) {
+  const auto& N = body.interpolation;
+  if (N.row_offset.empty()) return body.x[J];
+  Vec3 u = Vec3::Zero();
+  for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
+  return body.cloud.X[J] + u;
+}
+}  // namespace
+
+WallContact::WallContact(Body& body, const WallContactSettings& s)
+    : body_(body), lj_{1.0, s.distance}, pressure_(s.pressure), exclusion2_(s.exclusion * s.exclusion),
+      pairs_(s.distance, s.skin) {
+  if (!(s.distance > 0.0) || !(s.pressure > 0.0) || !(s.exclusion > s.distance))
+    throw std::invalid_argument("wall_contact: expected distance > 0, pressure > 0 and exclusion > distance");
+  const std::uint32_t bit = body.cloud.surface_bit(s.surface);
+  if (bit == 0u)
+    throw std::invalid_argument("wall_contact: body '" + body.name + "' has no surface named '" + s.surface + "'");
+  const auto& boundary = body.cloud.boundary_particles;
+  for (std::size_t b = 0; b < boundary.size(); ++b) {
+    const auto I = static_cast<Index>(boundary[b]);
+    if (!(body.cloud.surface_mask[static_cast<std::size_t>(I)] & bit)) continue;
+    particles_.push_back(I);
+    area_.push_back(body.cloud.boundary_area[b]);
+    reference_.push_back(body.cloud.X[static_cast<std::size_t>(I)]);
+  }
+  points_.resize(particles_.size());
+  force_.assign(particles_.size(), Vec3::Zero());
+  row_energy_.resize(particles_.size());
+  row_closest_.resize(particles_.size());
+}
+
+bool WallContact::excluded(Index i, Index j) const { return (reference_[i] - reference_[j]).squaredNorm() < exclusion2_; }
+
+void WallContact::add_forces(World&) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto n = static_cast<Index>(particles_.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) points_[i] = physical_point(body_, particles_[i]);
+  pairs_.update(points_, points_);  // symmetric: row i lists every j near i, i itself included
+  const auto& offset = pairs_.row_offset();
+  const auto& partner = pairs_.partner();
+  const double s2 = lj_.s0 * lj_.s0;
+  std::size_t active = 0;
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : active)
+  for (Index i = 0; i < n; ++i) {
+    double e = 0.0, closest2 = kInfinity;
+    Vec3 f = Vec3::Zero();
+    for (Index k = offset[i]; k < offset[i + 1]; ++k) {
+      const Index j = partner[k];
+      if (excluded(i, j)) continue;
+      const Vec3 rij = points_[i] - points_[j];
+      const double r2 = rij.squaredNorm();
+      closest2 = std::min(closest2, r2);
+      if (r2 >= s2) continue;
+      ++active;
+      double slope_over_r = 0.0;
+      const double c = scale(i, j);
+      e += c * (lj_.energy_and_slope(r2, slope_over_r) + 1.0);  // shifted: w(s0) = 0
+      f -= (c * slope_over_r) * rij;
+    }
+    row_energy_[i] = e;
+    row_closest_[i] = closest2;
+    force_[i] = f;
+  }
+  // Generalized forces sum_J Psi_I(X_J) f_J: only particles in contact carry a force,
+  // so a serial scatter over them is cheap and keeps a fixed order.
+  const auto& N = body_.interpolation;
+  for (Index i = 0; i < n; ++i) {
+    if (force_[i].isZero(0.0)) continue;
+    const Index J = particles_[i];
+    if (N.row_offset.empty()) {
+      body_.force[J] += force_[i];
+      continue;
+    }
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body_.force[N.col[k]] += N.psi[k] * force_[i];
+  }
+  double energy = 0.0, closest2 = kInfinity;  // serial, in particle order
+  for (Index i = 0; i < n; ++i) {
+    energy += row_energy_[i];
+    closest2 = std::min(closest2, row_closest_[i]);
+  }
+  energy_ = 0.5 * energy;  // every pair sits in two rows
+  active_pairs_ = active / 2;
+  max_active_pairs_ = std::max(max_active_pairs_, active_pairs_);
+  closest_ = std::sqrt(closest2);
+  smallest_ = std::min(smallest_, closest_);
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double WallContact::stable_dt(const World&) const {
+  if (pairs_.builds() == 0 || active_pairs_ == 0) return kInfinity;
+  const auto& offset = pairs_.row_offset();
+  const auto& partner = pairs_.partner();
+  const double s2 = lj_.s0 * lj_.s0;
+  double omega2 = 0.0;
+  const auto n = static_cast<Index>(particles_.size());
+#pragma omp parallel for schedule(dynamic, 64) reduction(max : omega2)
+  for (Index i = 0; i < n; ++i) {
+    const double mi = body_.mass[particles_[i]];
+    double g = 0.0;
+    for (Index k = offset[i]; k < offset[i + 1]; ++k) {
+      const Index j = partner[k];
+      if (excluded(i, j)) continue;
+      const double r2 = (points_[i] - points_[j]).squaredNorm();
+      if (r2 >= s2) continue;
+      g += scale(i, j) * lj_.stiffness(std::sqrt(r2)) * (1.0 / mi + 1.0 / std::sqrt(mi * body_.mass[particles_[j]]));
+    }
+    omega2 = std::max(omega2, g);
+  }
+  return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : kInfinity;
+}
+
+void WallContact::report(const World&, io::Json& summary) const {
+  io::Json j = io::Json::object();
+  j.set("energy", energy_);
+  j.set("active_pairs", active_pairs_);
+  j.set("max_active_pairs", max_active_pairs_);
+  j.set("surface_particles", particles_.size());
+  j.set("pair_list_builds", pairs_.builds());
+  // Closest approach of two non-excluded particles within distance + skin (null: none listed).
+  if (std::isfinite(closest_)) j.set("closest", closest_);
+  if (std::isfinite(smallest_)) j.set("closest_over_run", smallest_);
+  j.set("seconds", seconds_);
+  summary.set("wall_contact " + body_.name, j);
+}
+
+}  // namespace rkpm::sim
