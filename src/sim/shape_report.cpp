@@ -179,12 +179,14 @@ ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>
     s.inner_gap_min = std::min(s.inner_gap_min, gap);
   }
   if (s.thickness.empty()) throw std::runtime_error("shape report: no part of the surface has both a top and a bottom");
-  s.walls_crossed = s.has_inner_surface && !first_gap && s.inner_gap_min < 0.0;
   s.rms_vs_evans_fung = std::sqrt(rms / rms_n) / s.diameter;
   s.h_min = s.thickness.front();
   const auto it = std::max_element(s.thickness.begin(), s.thickness.end());
   s.h_max = *it;
   s.r_hmax_over_R = s.r[static_cast<std::size_t>(it - s.thickness.begin())] / R;
+  // At the rim the top and bottom sheets of the inner surface meet, and their gap there is
+  // zero up to round-off: crossing means a gap below -1e-3 h_max.
+  s.walls_crossed = s.has_inner_surface && !first_gap && s.inner_gap_min < -1e-3 * s.h_max;
   for (std::size_t j = 0; j < s.r.size(); ++j)
     s.updown_asymmetry = std::max(s.updown_asymmetry, std::abs(s.top[j] + s.bottom[j]) / s.h_max);
   // Axial asymmetry: each sector's thickness against the mean, over the bins all sectors see.

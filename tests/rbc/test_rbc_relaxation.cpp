@@ -55,6 +55,12 @@ body = "cell"
 surface = "inner"
 bulk = 1e6
 target = {}
+[[term]]
+type = "wall_contact"
+body = "cell"
+surface = "inner"
+distance = 0.2e-6
+pressure = 1e4
 )",
                      activity, target);
 }
@@ -106,6 +112,9 @@ TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
   EXPECT_LT(r.final.r_hmax_over_R, 0.85);
   // Both faces dimple alike: not a cup (stomatocyte).
   EXPECT_LT(r.final.updown_asymmetry, 0.05);
+  // The dimple leaves fluid between the faces (they have not passed through each other).
+  EXPECT_FALSE(r.final.walls_crossed);
+  EXPECT_GT(r.final.inner_gap_centre, 0.0);
   // The thickness profile is close to Evans-Fung scaled to the same diameter (the scene's
   // criterion is 5 % of D; the oblate start is about 12 % of D away).
   EXPECT_GT(r.initial.rms_vs_evans_fung, 0.08);

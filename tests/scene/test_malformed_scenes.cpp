@@ -135,6 +135,11 @@ std::vector<Malformed> malformed_scenes() {
       {"contact cutoff inside the potential well", kBase + kLceBody + term +
            "type = \"contact\"\nbodies = [\"cell\", \"gel\"]\nepsilon = 1e-20\ns0 = 1e-7\ncutoff = 5e-8\n",
        "bad.toml:29: [term] cutoff = 5e-08: expected a cutoff larger than s0 = 1e-07 m"},
+      {"wall contact exclusion inside the contact distance", kBase + term +
+           "type = \"wall_contact\"\nbody = \"cell\"\nsurface = \"zmax\"\ndistance = 2e-7\npressure = 1e4\n"
+           "exclusion = 1e-7\n",
+       "bad.toml:21: [term] exclusion = 1e-07: expected an exclusion larger than distance = 2e-07 m (particles of one "
+       "wall closer than the contact distance would repel at rest)"},
       {"vtu cloud whose file does not exist",
        replaced(kBase, kBlockCloud, "generator = \"vtu\"\nfile = \"meshes/none.vtu\""),
        "bad.toml:9: [body.cloud] file = \"meshes/none.vtu\": expected an existing file (resolved to meshes/none.vtu)"},

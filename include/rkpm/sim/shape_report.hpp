@@ -46,7 +46,7 @@ struct ShapeReport {
   double inner_gap_centre = 0.0;  // fluid thickness on the axis (first bin with both inner sheets) [m]
   double inner_gap_min = 0.0;     // smallest fluid thickness over the bins [m]
   double wall_centre = 0.0;       // wall thickness on the axis, mean of top and bottom wall [m]
-  bool walls_crossed = false;     // inner_gap_min < 0
+  bool walls_crossed = false;     // inner_gap_min < -1e-3 h_max (round-off where the sheets meet at the rim)
   bool biconcave = false;         // h_min / h_max <= 0.5, r(h_max)/R in [0.55, 0.85], walls not crossed
 };
 

@@ -1,0 +1,157 @@
+// The wall_contact term (sim/wall_contact.hpp): no force in the reference state, forces
+// equal to minus the gradient of its energy (central differences), no net force, and
+// a shell pressed flat keeps its two faces apart where without the term they pass
+// through each other.
+#include "sim_fixtures.hpp"
+
+#include "rkpm/sim/history.hpp"
+#include "rkpm/sim/wall_contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace rkpm::sim {
+namespace {
+
+using testing::build_from_text;
+
+// A coarse thick shell of the seed's size (R x H x T = 5 x 3 x 0.5 um), Mooney-Rivlin,
+// with `extra` appended (initial state, terms).
+std::string shell_scene(const std::string& extra) {
+  return R"([scene]
+name = "walls"
+[integrator]
+mode = "relax"
+relax_force_tol = 1e-4
+relax_velocity_tol = 1e-8
+[[body]]
+name = "cell"
+density = 1000.0
+[body.cloud]
+generator = "shell"
+semi_axes = [5e-6, 5e-6, 1.5e-6]
+thickness = 0.5e-6
+face_cells = 8
+layers = 3
+[body.material]
+model = "mooney_rivlin"
+c1 = 1e3
+c2 = 0
+lambda = 1e4
+)" + extra;
+}
+
+// distance 0.8 um, exclusion 1.2 um: the faces' inner sheets are 2 um apart in the
+// reference shell, so they interact once pressed closer than 0.8 um.
+const char* const kWallContact = R"(
+[[term]]
+type = "wall_contact"
+body = "cell"
+surface = "inner"
+distance = 0.8e-6
+pressure = 1e3
+exclusion = 1.2e-6
+)";
+
+WallContact& wall_term(World& world) {
+  for (auto& t : world.terms)
+    if (auto* w = dynamic_cast<WallContact*>(t.get())) return *w;
+  throw std::runtime_error("no wall_contact term");
+}
+
+// The term's own forces at the present state (body.force zeroed first).
+double term_forces(World& world, WallContact& term) {
+  Body& body = *world.bodies.front();
+  for (auto& f : body.force) f.setZero();
+  term.add_forces(world);
+  return term.energy();
+}
+
+TEST(WallContact, ReferenceShellCarriesNoContactForce) {
+  testing::ScopedThreads one(1);
+  auto sw = build_from_text(shell_scene(kWallContact));
+  WallContact& term = wall_term(*sw.world);
+  EXPECT_EQ(term_forces(*sw.world, term), 0.0);
+  EXPECT_EQ(term.active_pairs(), 0u);
+  for (const auto& f : sw.world->bodies.front()->force) EXPECT_EQ(f.norm(), 0.0);
+  // Listed pairs are within distance + skin (1.2 um) and not excluded: the inner sheets
+  // are 2 um apart on the axis, so none is that close.
+  EXPECT_GT(term.closest(), 1.2e-6);
+}
+
+// Squeezed to 0.3 along the axis, the inner sheets sit 0.6 um apart: inside the contact
+// distance. The generalized forces are minus the energy gradient with respect to d.
+TEST(WallContact, ForcesAreMinusTheEnergyGradient) {
+  testing::ScopedThreads one(1);
+  auto sw = build_from_text(shell_scene(std::string("[body.initial]\nstretch = [1.0, 1.0, 0.3]\n") + kWallContact));
+  World& world = *sw.world;
+  Body& body = *world.bodies.front();
+  WallContact& term = wall_term(world);
+  const double e0 = term_forces(world, term);
+  ASSERT_GT(term.active_pairs(), 20u);
+  ASSERT_GT(e0, 0.0);
+  const std::vector<Vec3> force = body.force;
+  double largest = 0.0;
+  Vec3 total = Vec3::Zero();
+  for (const auto& f : force) {
+    largest = std::max(largest, f.norm());
+    total += f;
+  }
+  // Pair forces are equal and opposite and the RK functions reproduce constants.
+  EXPECT_LT(total.norm(), 1e-10 * largest);
+  // Central differences on the particles with the largest forces, every axis.
+  std::vector<std::size_t> order(force.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::partial_sort(order.begin(), order.begin() + 6, order.end(),
+                    [&](std::size_t a, std::size_t b) { return force[a].norm() > force[b].norm(); });
+  const double h = 1e-5 * 0.8e-6;
+  for (int n = 0; n < 6; ++n) {
+    const std::size_t I = order[static_cast<std::size_t>(n)];
+    for (int axis = 0; axis < 3; ++axis) {
+      const double d0 = body.d[I][axis];
+      body.d[I][axis] = d0 + h;
+      const double ep = term_forces(world, term);
+      body.d[I][axis] = d0 - h;
+      const double em = term_forces(world, term);
+      body.d[I][axis] = d0;
+      EXPECT_NEAR(force[I][axis], -(ep - em) / (2.0 * h), 1e-6 * largest) << "particle " << I << " axis " << axis;
+    }
+  }
+}
+
+// An outer pressure of 300 Pa flattens the shell (no enclosed fluid). Without the term
+// the top face passes through the bottom one; with it the faces stop near the contact
+// distance.
+TEST(WallContact, ShellPressedFlatKeepsItsFacesApart) {
+  testing::ScopedThreads two(2);
+  const std::string pressure = R"(
+[[term]]
+type = "surface_pressure"
+body = "cell"
+surface = "outer"
+pressure = 300
+)";
+  for (const bool with_term : {false, true}) {
+    auto sw = build_from_text(shell_scene(pressure + (with_term ? kWallContact : "")));
+    Integrator integrator(*sw.world, sw.settings);
+    integrator.initialize();
+    for (int step = 0; step < 20000 && !integrator.converged(); ++step) integrator.step();
+    ASSERT_TRUE(integrator.converged()) << "with_term = " << with_term;
+    const ShapeReport s = final_shape(*sw.world->bodies.front());
+    EXPECT_EQ(s.walls_crossed, !with_term) << "gap " << s.inner_gap_centre << " min " << s.inner_gap_min << " h_min " << s.h_min;
+    if (with_term) {
+      // The walls stop where the contact pressure carries the load: a little inside s0.
+      EXPECT_GT(s.inner_gap_centre, 0.6e-6);
+      EXPECT_LT(s.inner_gap_centre, 0.8e-6);
+      EXPECT_GT(wall_term(*sw.world).active_pairs(), 0u);
+    } else {
+      EXPECT_LT(s.inner_gap_centre, -1e-6);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rkpm::sim
