@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rkpm::sim {
@@ -81,7 +82,10 @@ Material make_material(const scene::BodySpec& spec, const particles::Cloud& clou
 // Initial director (Eq. 8 and the text around it): the outward normal of the nearest
 // surface particle, oriented away from the body's centre so that a shell's wall carries
 // the outer normal through its thickness; or radial; or a fixed vector.
-DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
+// A particle whose nearest surface particles tie (a mirror-symmetric cloud's centre)
+// gets the normal of the lowest id among them, an arbitrary choice when their normals
+// disagree: `warning` then names the first such particle.
+DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::string& warning) {
   const auto& p = *spec.director;
   const auto& cloud = body.cloud;
   const auto& model = std::get<LCEMaterial>(body.material).model;
@@ -102,6 +106,10 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
     std::vector<Vec3> surface;
     for (Index b : cloud.boundary_particles) surface.push_back(cloud.X[b]);
     const rk::NeighborSearch search(surface);
+    const auto oriented = [&](const Vec3& normal, std::size_t i) {
+      return normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
+    };
+    std::vector<char> ambiguous(n, 0);
 #pragma omp parallel
     {
       std::vector<std::pair<Index, double>> found;
@@ -109,11 +117,27 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body) {
       for (std::int64_t k = 0; k < static_cast<std::int64_t>(n); ++k) {
         const auto i = static_cast<std::size_t>(k);
         const auto bi = cloud.boundary_index[i];
-        // Inside: the normal of the nearest surface particle (the lowest id among equals).
-        const Vec3 normal = bi >= 0 ? cloud.boundary_normal[bi]
-                                    : cloud.boundary_normal[search.nearest(cloud.X[i], found).first];
-        dir.h[i] = normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
+        if (bi >= 0) {
+          dir.h[i] = oriented(cloud.boundary_normal[bi], i);
+          continue;
+        }
+        // Inside: the normal of the nearest surface particle (the lowest id among equals;
+        // `found` then holds all of them).
+        dir.h[i] = oriented(cloud.boundary_normal[search.nearest(cloud.X[i], found).first], i);
+        for (const auto& f : found)
+          if (oriented(cloud.boundary_normal[f.first], i).dot(dir.h[i]) < 0.5) ambiguous[i] = 1;  // > 60 deg apart
       }
+    }
+    const auto first = std::find(ambiguous.begin(), ambiguous.end(), 1);
+    if (first != ambiguous.end()) {
+      const auto i = static_cast<std::size_t>(first - ambiguous.begin());
+      warning = fmt::format(
+          "{}: body '{}': [body.director] initial = \"surface_normal\": {} particle(s) lie equally near surface "
+          "particles whose normals differ by more than 60 deg (first: particle {} at ({:.4g}, {:.4g}, {:.4g}) m, "
+          "e.g. the centre of a mirror-symmetric cloud); their director is the normal of the lowest id, an "
+          "arbitrary tilt. An odd cell count puts no particle there.",
+          spec.body.file(), body.name, std::count(ambiguous.begin(), ambiguous.end(), 1), i, cloud.X[i].x(),
+          cloud.X[i].y(), cloud.X[i].z());
     }
   }
   dir.h0 = dir.h;
@@ -182,7 +206,7 @@ std::vector<ConstrainedComponent> constrained_components(const scene::BodySpec& 
   return out;
 }
 
-std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed) {
+std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed, std::string& warning) {
   auto body = std::make_unique<Body>();
   body->name = spec.name();
   body->id = id;
@@ -237,7 +261,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->P.assign(n, Mat3::Zero());
   update_positions(*body);
 
-  if (spec.director) body->director = make_director(spec, *body);
+  if (spec.director) body->director = make_director(spec, *body, warning);
   if (auto* lce = std::get_if<LCEMaterial>(&body->material))
     lce->activity = activity_field(spec, *body, lce->model.zeta);
   try {
@@ -296,7 +320,11 @@ std::unique_ptr<World> build_world(const scene::Scene& scene) {
   auto world = std::make_unique<World>();
   const auto seed = static_cast<std::uint64_t>(scene.integrator.integer("seed"));
   int id = 0;
-  for (const auto& spec : scene.bodies) world->bodies.push_back(build_body(spec, id++, seed));
+  for (const auto& spec : scene.bodies) {
+    std::string warning;
+    world->bodies.push_back(build_body(spec, id++, seed, warning));
+    if (!warning.empty()) world->setup_warnings.push_back(warning);
+  }
   for (const auto& term : scene.terms) world->terms.push_back(make_term(term, *world));
   return world;
 }

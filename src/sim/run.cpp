@@ -50,6 +50,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     log << "error: " << e.what() << "\n";
     return kBadInput;
   }
+  for (const auto& w : world->setup_warnings) log << "warning: " << w << "\n";
   IntegratorSettings settings = integrator_settings(scene);
   settings.allow_unstable_dt = options.allow_unstable_dt;
   Integrator integrator(*world, settings);

@@ -57,5 +57,27 @@ TEST(CrawlingDirector, InitialDirectorIsMirrorSymmetric) { expect_director_mirro
 
 TEST(CrawlingDirector, CoarseInitialDirectorIsMirrorSymmetric) { expect_director_mirror_symmetric(true); }
 
+// With an even cell count a particle sits at the ball's centre, equally near every
+// surface particle of the middle ring: the set-up warns and names it; with an odd
+// count nothing is ambiguous and there is no warning.
+TEST(CrawlingDirector, AmbiguousCentreDirectorIsWarnedAbout) {
+  for (const std::int64_t cells : {10, 11}) {
+    scene::Scene s = rkpm::testing::crawling_scene(true);
+    for (scene::BodySpec& body : s.bodies)
+      if (body.name() == "cell") body.cloud.set("cells", cells, 0, true);
+    const auto world = build_world(s);
+    if (cells % 2 == 0) {
+      ASSERT_EQ(world->setup_warnings.size(), 1u);
+      const std::string& w = world->setup_warnings.front();
+      EXPECT_NE(w.find("body 'cell': [body.director] initial = \"surface_normal\": 1 particle(s) lie equally near"),
+                std::string::npos) << w;
+      // The centre particle, named by its position (the ball's centre).
+      EXPECT_NE(w.find("(0, 0, 1.034e-05) m"), std::string::npos) << w;
+    } else {
+      EXPECT_TRUE(world->setup_warnings.empty()) << world->setup_warnings.front();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rkpm::sim

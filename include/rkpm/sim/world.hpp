@@ -44,6 +44,9 @@ struct World {
   std::vector<std::unique_ptr<Term>> terms;
   double time = 0.0;
   std::int64_t step = 0;
+  // Notes for the user found while building (the scene is valid, but a choice in it
+  // has a consequence worth knowing); the run prints them as warnings.
+  std::vector<std::string> setup_warnings;
 
   std::size_t particle_count() const {
     std::size_t n = 0;
