@@ -48,9 +48,14 @@ void History::record(const World& world, Integrator& integrator) {
     }
   if (shape_body_) {
     // The whole shape report is a pass over the surface particles: cheap next to a step.
-    const ShapeReport s = final_shape(*shape_body_);
-    out_ << fmt::format(",{:.10g},{:.10g},{:.6g},{:.6g},{:.6g}", s.volume, s.area, s.reduced_volume,
-                        s.h_min / s.h_max, s.inner_gap_min);
+    // Fields that cannot be measured in this state stay empty.
+    try {
+      const ShapeReport s = final_shape(*shape_body_);
+      out_ << fmt::format(",{:.10g},{:.10g},{:.6g},{:.6g},", s.volume, s.area, s.reduced_volume, s.h_min / s.h_max);
+      if (s.has_inner_gap) out_ << fmt::format("{:.6g}", s.inner_gap_min);
+    } catch (const std::runtime_error&) {
+      out_ << ",,,,";
+    }
   }
   out_ << "\n";
   out_.flush();
@@ -71,10 +76,10 @@ void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv,
   j.set("area", s.area);
   j.set("reduced_volume", s.reduced_volume);
   j.set("rms_vs_evans_fung_over_D", s.rms_vs_evans_fung);
-  if (s.has_inner_surface) {
+  if (s.has_inner_gap) {
     j.set("inner_gap_centre", s.inner_gap_centre);
     j.set("inner_gap_min", s.inner_gap_min);
-    j.set("wall_thickness_centre", s.wall_centre);
+    j.set("wall_thickness_centre", s.wall_thickness_centre);
     j.set("walls_crossed", s.walls_crossed);
   }
   j.set("biconcave", s.biconcave);
@@ -85,7 +90,7 @@ void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv,
   for (std::size_t k = 0; k < s.r.size(); ++k) {
     out << fmt::format("{:.8g},{:.8g},{:.8g},{:.8g},{:.8g}", s.r[k], s.thickness[k], s.top[k], s.bottom[k],
                        s.evans_fung[k]);
-    if (s.has_inner_surface && s.has_inner[k])
+    if (s.inner_in_bin[k])
       out << fmt::format(",{:.8g},{:.8g}\n", s.inner_top[k], s.inner_bottom[k]);
     else
       out << ",,\n";

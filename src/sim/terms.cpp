@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 namespace rkpm::sim {
 
 void BodyForce::add_forces(World&) {
@@ -108,11 +110,22 @@ std::unique_ptr<Term> make_term(const scene::TermSpec& spec, World& world) {
     s.pressure = p.real("pressure");
     s.exclusion = p.real("exclusion");
     s.skin = p.real("skin");
+    std::unique_ptr<WallContact> term;
     try {
-      return std::make_unique<WallContact>(body_named("body"), s);
+      term = std::make_unique<WallContact>(body_named("body"), s);
     } catch (const std::invalid_argument& e) {
       throw SetupError(fmt::format("{}:{}: [term] {}", p.file(), p.table_line(), e.what()));
     }
+    // A square lattice of spacing a has holes a / sqrt(2) from their corners: beyond
+    // a = sqrt(2) s0 a particle of one wall can pass between those of the other.
+    if (term->surface_spacing() > std::sqrt(2.0) * s.distance)
+      world.setup_warnings.push_back(fmt::format(
+          "{}:{}: [term] wall_contact: distance = {:.3g} m is below the particle spacing of surface \"{}\" "
+          "divided by sqrt(2) (spacing {:.3g} m, the root of the mean particle area): a particle of one wall can "
+          "pass between the particles of the other. Use distance >= {:.3g} m or a finer cloud.",
+          p.file(), p.line("distance"), s.distance, s.surface, term->surface_spacing(),
+          term->surface_spacing() / std::sqrt(2.0)));
+    return term;
   }
   throw SetupError(fmt::format("{}:{}: [term] type = \"{}\": this term is declared in the scene format but not yet "
                                "available in this version of rkpm",

@@ -2,6 +2,8 @@
 
 #include "rkpm/io/json.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -23,14 +25,22 @@ Vec3 physical_point(const Body& body, Index J) {
 }
 }  // namespace
 
-WallContact::WallContact(Body& body, const WallContactSettings& s)
-    : body_(body), lj_{1.0, s.distance}, pressure_(s.pressure), exclusion2_(s.exclusion * s.exclusion),
-      pairs_(s.distance, s.skin) {
-  if (!(s.distance > 0.0) || !(s.pressure > 0.0) || !(s.exclusion > s.distance))
-    throw std::invalid_argument("wall_contact: expected distance > 0, pressure > 0 and exclusion > distance");
-  const std::uint32_t bit = body.cloud.surface_bit(s.surface);
+namespace {
+const WallContactSettings& checked(const WallContactSettings& s) {
+  if (!(s.distance > 0.0) || !(s.pressure > 0.0) || !(s.exclusion > s.distance) || !(s.skin >= 0.0))
+    throw std::invalid_argument(fmt::format("wall_contact: expected distance > 0, pressure > 0, exclusion > distance "
+                                            "and skin >= 0, got distance = {}, pressure = {}, exclusion = {}, skin = {}",
+                                            s.distance, s.pressure, s.exclusion, s.skin));
+  return s;
+}
+}  // namespace
+
+WallContact::WallContact(Body& body, const WallContactSettings& settings)
+    : body_(body), surface_(checked(settings).surface), lj_{1.0, settings.distance}, pressure_(settings.pressure),
+      exclusion2_(settings.exclusion * settings.exclusion), pairs_(settings.distance, settings.skin) {
+  const std::uint32_t bit = body.cloud.surface_bit(surface_);
   if (bit == 0u)
-    throw std::invalid_argument("wall_contact: body '" + body.name + "' has no surface named '" + s.surface + "'");
+    throw std::invalid_argument("wall_contact: body '" + body.name + "' has no surface named '" + surface_ + "'");
   const auto& boundary = body.cloud.boundary_particles;
   for (std::size_t b = 0; b < boundary.size(); ++b) {
     const auto I = static_cast<Index>(boundary[b]);
@@ -43,6 +53,13 @@ WallContact::WallContact(Body& body, const WallContactSettings& s)
   force_.assign(particles_.size(), Vec3::Zero());
   row_energy_.resize(particles_.size());
   row_closest_.resize(particles_.size());
+}
+
+double WallContact::surface_spacing() const {
+  if (area_.empty()) return 0.0;
+  double total = 0.0;
+  for (double a : area_) total += a;
+  return std::sqrt(total / static_cast<double>(area_.size()));
 }
 
 bool WallContact::excluded(Index i, Index j) const { return (reference_[i] - reference_[j]).squaredNorm() < exclusion2_; }
@@ -70,7 +87,7 @@ void WallContact::add_forces(World&) {
       if (r2 >= s2) continue;
       ++active;
       double slope_over_r = 0.0;
-      const double c = scale(i, j);
+      const double c = pair_energy_scale(i, j);
       e += c * (lj_.energy_and_slope(r2, slope_over_r) + 1.0);  // shifted: w(s0) = 0
       f -= (c * slope_over_r) * rij;
     }
@@ -99,15 +116,17 @@ void WallContact::add_forces(World&) {
   active_pairs_ = active / 2;
   max_active_pairs_ = std::max(max_active_pairs_, active_pairs_);
   closest_ = std::sqrt(closest2);
-  smallest_ = std::min(smallest_, closest_);
+  closest_over_run_ = std::min(closest_over_run_, closest_);
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Pairs listed within s0 + skin count with their stiffness at min(r, s0): the estimate
+// is refreshed only every few steps, and the stiffness jumps from 0 to 72 c / s0^2 the
+// moment a pair crosses s0, so a pair about to touch must already limit the step.
 double WallContact::stable_dt(const World&) const {
-  if (pairs_.builds() == 0 || active_pairs_ == 0) return kInfinity;
+  if (pairs_.builds() == 0 || pairs_.size() == 0) return kInfinity;
   const auto& offset = pairs_.row_offset();
   const auto& partner = pairs_.partner();
-  const double s2 = lj_.s0 * lj_.s0;
   double omega2 = 0.0;
   const auto n = static_cast<Index>(particles_.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : omega2)
@@ -117,9 +136,8 @@ double WallContact::stable_dt(const World&) const {
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
       const Index j = partner[k];
       if (excluded(i, j)) continue;
-      const double r2 = (points_[i] - points_[j]).squaredNorm();
-      if (r2 >= s2) continue;
-      g += scale(i, j) * lj_.stiffness(std::sqrt(r2)) * (1.0 / mi + 1.0 / std::sqrt(mi * body_.mass[particles_[j]]));
+      const double r = std::min((points_[i] - points_[j]).norm(), lj_.s0);
+      g += pair_energy_scale(i, j) * lj_.stiffness(r) * (1.0 / mi + 1.0 / std::sqrt(mi * body_.mass[particles_[j]]));
     }
     omega2 = std::max(omega2, g);
   }
@@ -133,11 +151,12 @@ void WallContact::report(const World&, io::Json& summary) const {
   j.set("max_active_pairs", max_active_pairs_);
   j.set("surface_particles", particles_.size());
   j.set("pair_list_builds", pairs_.builds());
-  // Closest approach of two non-excluded particles within distance + skin (null: none listed).
+  // Closest approach of two non-excluded particles within distance + skin; the keys are
+  // left out while no such pair has been listed.
   if (std::isfinite(closest_)) j.set("closest", closest_);
-  if (std::isfinite(smallest_)) j.set("closest_over_run", smallest_);
+  if (std::isfinite(closest_over_run_)) j.set("closest_over_run", closest_over_run_);
   j.set("seconds", seconds_);
-  summary.set("wall_contact " + body_.name, j);
+  summary.set("wall_contact " + body_.name + " " + surface_, j);
 }
 
 }  // namespace rkpm::sim

@@ -73,7 +73,8 @@ std::vector<std::vector<double>> read_csv(const fs::path& path) {
     std::vector<double> row;
     std::stringstream fields(line);
     // Empty fields (the inner surface's columns where it has no sheet) read as NaN and
-    // are compared as absent.
+    // are compared as absent; a row ending in empty fields is shorter (getline drops
+    // the last empty one), the same in both files.
     for (std::string f; std::getline(fields, f, ',');) row.push_back(f.empty() ? std::nan("") : std::stod(f));
     rows.push_back(row);
   }
@@ -95,8 +96,9 @@ TEST(ShapeCommand, FrameReportEqualsTheRunsOwnReport) {
     ASSERT_EQ(from_frame[k].size(), from_run[k].size()) << "row " << k;
     for (std::size_t c = 0; c < from_run[k].size(); ++c) {
       ASSERT_EQ(std::isnan(from_frame[k][c]), std::isnan(from_run[k][c])) << "row " << k << " column " << c;
-      if (!std::isnan(from_run[k][c]))
+      if (!std::isnan(from_run[k][c])) {
         EXPECT_NEAR(from_frame[k][c], from_run[k][c], 1e-7 * std::abs(from_run[k][c]) + 1e-16);
+      }
     }
   }
   // The shell's inner surface gives the fluid gap on the axis (inner_top, inner_bottom).

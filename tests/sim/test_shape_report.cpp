@@ -1,7 +1,7 @@
 // The shape report's fluid gap: the axial distance between the inner surface's top and
 // bottom sheets of a shell, on shells whose inner surface is known in closed form,
-// and the flag for walls that have passed through each other (the model has no
-// self-contact between the two walls of one body).
+// and the flag for walls that have passed through each other (which only the
+// wall_contact term prevents).
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/sim/shape_report.hpp"
 
@@ -28,15 +28,18 @@ TEST(ShapeReport, UndeformedShellHasTheClosedFormGapAndWall) {
   const ShapeReport s = measure_shape(cloud, cloud.X, "outer");
   ASSERT_TRUE(s.has_inner_surface);
   EXPECT_NEAR(s.inner_gap_centre, 2.0e-6, 2e-3 * 2.0e-6);
-  EXPECT_NEAR(s.wall_centre, 0.5e-6, 2e-3 * 0.5e-6);
+  EXPECT_NEAR(s.wall_thickness_centre, 0.5e-6, 2e-3 * 0.5e-6);
   EXPECT_NEAR(s.h_min, 3.0e-6, 1e-3 * 3.0e-6);
-  // The gap is smallest next to the rim, where the inner sheets meet.
+  // The gap narrows toward the rim; the sheets enter while their normal is within 60 deg
+  // of the axis, i.e. up to r = 4.46 um, where the gap is still 2 x 0.13 um.
   EXPECT_LT(s.inner_gap_min, 0.5 * s.inner_gap_centre);
-  EXPECT_GE(s.inner_gap_min, 0.0);
+  EXPECT_GT(s.inner_gap_min, 0.1e-6);
   EXPECT_FALSE(s.walls_crossed);
-  // Every outer bin inside the inner surface's radius (4.5 of 5 um) sees both inner sheets.
+  // Every outer bin well inside the inner surface's radius (4.5 of 5 um) sees both inner sheets.
   for (std::size_t k = 0; k < s.r.size(); ++k) {
-    if (s.r[k] < 4.0e-6) EXPECT_TRUE(s.has_inner[k]) << "bin at r = " << s.r[k];
+    if (s.r[k] < 4.0e-6) {
+      EXPECT_TRUE(s.inner_in_bin[k]) << "bin at r = " << s.r[k];
+    }
   }
 }
 
@@ -58,14 +61,41 @@ TEST(ShapeReport, WallsPressedThroughEachOtherAreFlaggedAndNotBiconcave) {
     }
     const ShapeReport s = measure_shape(cloud, x, "outer");
     EXPECT_NEAR(s.inner_gap_centre, 2.0e-6 * s0 - 2.0 * a0, 0.02e-6) << "a0 = " << a0;
-    EXPECT_NEAR(s.wall_centre, 0.5e-6 * s0, 0.005e-6) << "a0 = " << a0;
-    EXPECT_LE(s.inner_gap_min, s.inner_gap_centre);
+    EXPECT_NEAR(s.wall_thickness_centre, 0.5e-6 * s0, 0.005e-6) << "a0 = " << a0;
     EXPECT_EQ(s.walls_crossed, a0 > 0.3e-6) << "a0 = " << a0;
     EXPECT_LT(s.h_min / s.h_max, 0.5) << "a0 = " << a0;
     EXPECT_GT(s.r_hmax_over_R, 0.55) << "a0 = " << a0;
     EXPECT_LT(s.r_hmax_over_R, 0.85) << "a0 = " << a0;
     EXPECT_EQ(s.biconcave, !s.walls_crossed) << "a0 = " << a0;
   }
+}
+
+// The same disc with the walls pressed through each other in one place only: a dent of
+// depth a0 = 2 um at r = 2.5 um in the direction 22.5 deg (the middle of one of the
+// report's eight 45-deg sectors), 0.5 um wide radially and 0.3 rad around. The inner
+// sheets there are 0.88 um from the mid-plane; the dent's mean over its sector is
+// 0.64 a0 = 1.27 um, over the whole ring 1.27 / 8 um. So the sector's gap is negative,
+// the ring's mean gap is not, and the shape counts as crossed.
+TEST(ShapeReport, CrossingOnOneSideIsNotAveragedAway) {
+  const particles::Cloud cloud = seed_shell();
+  std::vector<Vec3> x = cloud.X;
+  const double centre_angle = M_PI / 8.0;
+  for (auto& p : x) {
+    const double r = std::hypot(p.x(), p.y()), x2 = r * r / 25e-12;
+    p.z() *= (0.81 + 7.83 * x2 - 4.39 * x2 * x2) * (10.0 / 7.82) / 3.0;
+    const double angle = std::remainder(std::atan2(p.y(), p.x()) - centre_angle, 2.0 * M_PI);
+    const double dent = 2e-6 * std::exp(-std::pow((r - 2.5e-6) / 0.5e-6, 2) - std::pow(angle / 0.3, 2));
+    p.z() -= std::copysign(dent, p.z());
+  }
+  const ShapeReport s = measure_shape(cloud, x, "outer");
+  for (std::size_t k = 0; k < s.r.size(); ++k)
+    if (std::abs(s.r[k] - 2.5e-6) < 0.1e-6) {
+      ASSERT_TRUE(s.inner_in_bin[k]);
+      EXPECT_GT(s.inner_top[k] - s.inner_bottom[k], 0.5e-6) << "bin at r = " << s.r[k];
+    }
+  EXPECT_LT(s.inner_gap_min, -0.3e-6);
+  EXPECT_TRUE(s.walls_crossed);
+  EXPECT_NEAR(s.inner_gap_centre, 2.0e-6 * 0.81 * (10.0 / 7.82) / 3.0, 0.01e-6);  // the axis is untouched
 }
 
 // A surface without an inner surface (a solid sphere) reports no gap.
@@ -76,7 +106,8 @@ TEST(ShapeReport, SolidBodyHasNoInnerSurface) {
   const ShapeReport s = measure_shape(cloud, cloud.X, "surface");
   EXPECT_FALSE(s.has_inner_surface);
   EXPECT_FALSE(s.walls_crossed);
-  EXPECT_EQ(s.has_inner.size(), s.r.size());
+  EXPECT_FALSE(s.has_inner_gap);
+  EXPECT_EQ(s.inner_in_bin.size(), s.r.size());
 }
 
 }  // namespace

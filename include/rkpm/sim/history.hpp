@@ -1,6 +1,7 @@
 // history.csv: one row per frame with the quantities a user follows over a run —
 // energies and their balance, the relaxation residual, enclosed volumes and, for
-// the body named by [output] shape_report, its volume, area and reduced volume.
+// the body named by [output] shape_report, its volume, area, reduced volume, h_min/h_max
+// and the smallest fluid gap between its faces (sim/shape_report.hpp).
 #pragma once
 
 #include "rkpm/sim/integrator.hpp"

@@ -11,9 +11,13 @@
 // A shell with an inner surface (named "inner") also gets the same profile of that
 // surface, split by the sign of the axial component of its normal pointing into the
 // cavity: the gap between its top and bottom sheets is the thickness of the enclosed
-// fluid. The model has no self-contact between the two walls of one body, so a dimple
-// deep enough to close this gap would let the walls pass through each other; a
-// negative gap marks such a shape as not physical (`walls_crossed`).
+// fluid. Only the surface's particles whose normal is within 60 deg of the axis enter
+// (|n_z| >= |n| / 2): at the rim the inner surface turns vertical and its top and bottom
+// meet, and there the split would measure no fluid at all. The smallest gap is taken
+// per radial bin and angular sector, so a crossing on one side is not averaged away.
+// Without the wall_contact term (sim/wall_contact.hpp) nothing stops the two walls of
+// one body from passing through each other; a negative gap flags such a shape as not
+// physical (`walls_crossed`).
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -41,12 +45,13 @@ struct ShapeReport {
   double rms_vs_evans_fung = 0.0; // RMS of h - T_EF over the bins, as a fraction of D
   // Inner surface (shells only; empty / zero otherwise), on the bins of `r`:
   std::vector<double> inner_top, inner_bottom;  // axial position of its sheets [m]
-  std::vector<char> has_inner;    // 1 where the bin holds both inner sheets
+  std::vector<char> inner_in_bin;  // 1 where the bin holds both inner sheets
   bool has_inner_surface = false;
-  double inner_gap_centre = 0.0;  // fluid thickness on the axis (first bin with both inner sheets) [m]
-  double inner_gap_min = 0.0;     // smallest fluid thickness over the bins [m]
-  double wall_centre = 0.0;       // wall thickness on the axis, mean of top and bottom wall [m]
-  bool walls_crossed = false;     // inner_gap_min < -1e-3 h_max (round-off where the sheets meet at the rim)
+  bool has_inner_gap = false;            // some bin holds both inner sheets
+  double inner_gap_centre = 0.0;         // fluid thickness in the innermost bin with both sheets [m]
+  double inner_gap_min = 0.0;            // smallest fluid thickness over the bins and sectors [m]
+  double wall_thickness_centre = 0.0;    // there: mean of the top and bottom wall's thickness [m]
+  bool walls_crossed = false;            // inner_gap_min < -0.01 h_max
   bool biconcave = false;         // h_min / h_max <= 0.5, r(h_max)/R in [0.55, 0.85], walls not crossed
 };
 

@@ -10,7 +10,9 @@
 // at gap d < s0 then press on each other with the continuum pressure
 //     p(d) = 2 pi p0 (d/s0) [(s0/d)^12 - 2 (s0/d)^6 + 1],
 // (4.4 p0 at d = 0.9 s0, 40 p0 at 0.8 s0): p0 sets the stiffness, s0 the distance at
-// which the walls meet. The force is continuous at s0 (w'(s0) = 0). Pairs closer than
+// which the walls meet. That law is the continuum limit, for a particle spacing well
+// below s0; with a spacing above sqrt(2) s0 a particle can pass between those of the
+// other wall (the set-up warns). The force is continuous at s0 (w'(s0) = 0). Pairs closer than
 // `exclusion` in the reference configuration are parts of the same wall and never
 // interact, so the reference state carries no contact force when exclusion > s0.
 // Pairs come from a symmetric Verlet list over the surface (contact_pairs.hpp); each
@@ -41,7 +43,7 @@ class WallContact final : public Term {
   std::string name() const override { return "wall_contact"; }
   void add_forces(World& world) override;
   double stored_energy(const World&) const override { return energy_; }
-  // Gershgorin bound over the active pairs, as for the contact term.
+  // Gershgorin bound as for the contact term, over the pairs listed within s0 + skin.
   double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
 
@@ -51,14 +53,17 @@ class WallContact final : public Term {
   // evaluation [m]; infinity when none is listed.
   double closest() const { return closest_; }
   const std::vector<Index>& particles() const { return particles_; }  // the surface's particles
+  // Root of the mean reference area per surface particle [m]: the particle spacing.
+  double surface_spacing() const;
   const std::vector<Vec3>& point_force() const { return force_; }     // on their physical points
 
  private:
   // Pair energy scale A_I A_J p0 / s0 [J]; the energy is that times (s0/r)^12 - 2 (s0/r)^6 + 1.
-  double scale(Index i, Index j) const { return area_[i] * area_[j] * pressure_ / lj_.s0; }
+  double pair_energy_scale(Index i, Index j) const { return area_[i] * area_[j] * pressure_ / lj_.s0; }
   bool excluded(Index i, Index j) const;
 
   Body& body_;
+  std::string surface_;
   LennardJones lj_;  // eps = 1: the shape of w
   double pressure_, exclusion2_;
   std::vector<Index> particles_;  // body particle of each surface index
@@ -67,7 +72,8 @@ class WallContact final : public Term {
   std::vector<double> row_energy_, row_closest_;
   ContactPairs pairs_;
   double energy_ = 0.0;
-  double closest_ = std::numeric_limits<double>::infinity(), smallest_ = std::numeric_limits<double>::infinity();
+  double closest_ = std::numeric_limits<double>::infinity();
+  double closest_over_run_ = std::numeric_limits<double>::infinity();
   std::size_t active_pairs_ = 0, max_active_pairs_ = 0;
   double seconds_ = 0.0;
 };
