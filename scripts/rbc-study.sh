@@ -46,7 +46,12 @@ for r in res:
     rows.append(dict(tag=tag, particles=s["total_particles"], steps=s["steps"], wall_s=s["wall_time"],
                      converged=s.get("converged"), h_ratio=sh["h_min_over_h_max"], r_hmax=sh["r_hmax_over_R"],
                      rms_ef=sh["rms_vs_evans_fung_over_D"], updown=sh["updown_asymmetry"],
-                     reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6, prof=prof))
+                     reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6, prof=prof,
+                     # The fluid left between the faces on the axis, whether they crossed, and
+                     # how many particle pairs of the two faces pressed on each other at most.
+                     gap_um=sh["inner_gap_centre"] * 1e6 if "inner_gap_centre" in sh else "",
+                     crossed=sh.get("walls_crossed", ""),
+                     contact_pairs=s.get("wall_contact cell inner", {}).get("max_active_pairs", "")))
 if not rows:
     sys.exit("no finished runs")
 fine = max(rows, key=lambda r: r["particles"])
@@ -70,20 +75,24 @@ for a, b in zip(ordered, ordered[1:]):
     if b is not fine and a["rms_vs_finest"] > 0 and b["rms_vs_finest"] > 0:
         b["rate"] = f"{math.log(a['rms_vs_finest'] / b['rms_vs_finest']) / math.log(b['face_cells'] / a['face_cells']):.2f}"
 keys = ["tag", "particles", "steps", "wall_s", "converged", "h_ratio", "r_hmax", "rms_ef", "rms_vs_finest",
-        "rate", "updown", "reduced_volume", "diameter_um"]
+        "rate", "updown", "reduced_volume", "diameter_um", "gap_um", "crossed", "contact_pairs"]
 with open(f"{out}/study.csv", "w") as f:
     f.write(",".join(keys) + "\n")
     for r in sorted(rows, key=lambda r: r["particles"]):
         f.write(",".join(str(r[k]) for k in keys) + "\n")
 with open(f"{out}/table.md", "w") as f:
     f.write("| particles | face_cells:layers | steps | wall [s] | h_min/h_max | r(h_max)/R | RMS vs EF / D | "
-            "RMS vs finest / D | order | up-down | reduced volume | D [um] |\n")
-    f.write("|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+            "RMS vs finest / D | order | up-down | reduced volume | D [um] | fluid gap on axis [um] | "
+            "faces crossed | contact pairs (max) |\n")
+    f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
     for r in ordered:
         fc, ly = r["tag"][2:].split("_l")
         f.write(f"| {r['particles']:,} | {fc}:{ly} | {r['steps']:,} | {r['wall_s']:.0f} | {r['h_ratio']:.3f} | "
                 f"{r['r_hmax']:.3f} | {r['rms_ef']:.3f} | {r['rms_vs_finest']:.4f} | {r['rate'] or '-'} | "
-                f"{r['updown']:.3f} | {r['reduced_volume']:.3f} | {r['diameter_um']:.2f} |\n")
+                f"{r['updown']:.3f} | {r['reduced_volume']:.3f} | {r['diameter_um']:.2f} | "
+                f"{'-' if r['gap_um'] == '' else format(r['gap_um'], '.3f')} | "
+                f"{'-' if r['crossed'] == '' else ('yes' if r['crossed'] else 'no')} | "
+                f"{'-' if r['contact_pairs'] == '' else format(r['contact_pairs'], ',')} |\n")
 print(open(f"{out}/table.md").read())
 PY
 
