@@ -148,11 +148,7 @@ void physical_displacement(const Body& body, std::vector<Vec3>& u) {
   const auto n = static_cast<Index>(body.size());
   u.resize(body.size());
 #pragma omp parallel for schedule(static)
-  for (Index J = 0; J < n; ++J) {
-    Vec3 s = Vec3::Zero();
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) s += N.psi[k] * body.d[N.col[k]];
-    u[J] = s;
-  }
+  for (Index J = 0; J < n; ++J) u[J] = rk::interpolate(N, body.d, J);
 }
 
 void current_boundary_normals(const Body& body, std::vector<Vec3>& normals) {

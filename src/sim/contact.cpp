@@ -94,19 +94,10 @@ namespace {
 
 // Physical positions p_J = X_J + sum_I Psi_I(X_J) d_I of every particle (X + d without RK operators).
 void all_physical_points(const Body& body, std::vector<Vec3>& p) {
-  const auto& N = body.interpolation;
   const auto n = static_cast<Index>(body.size());
   p.resize(body.size());
-  if (N.row_offset.empty()) {
-    p = body.x;
-    return;
-  }
 #pragma omp parallel for schedule(static)
-  for (Index J = 0; J < n; ++J) {
-    Vec3 u = Vec3::Zero();
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
-    p[J] = body.cloud.X[J] + u;
-  }
+  for (Index J = 0; J < n; ++J) p[J] = physical_point(body, J);
 }
 
 // Forces f_J on the physical points become generalized forces sum_J Psi_I(X_J) f_J,

@@ -11,16 +11,7 @@ namespace rkpm::sim {
 
 void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out) {
   out.resize(body.size());
-  const auto& N = body.interpolation;
-  for (Index J : particles) {
-    if (N.row_offset.empty()) {
-      out[J] = body.x[J];
-      continue;
-    }
-    Vec3 u = Vec3::Zero();
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
-    out[J] = body.cloud.X[J] + u;
-  }
+  for (Index J : particles) out[J] = physical_point(body, J);
 }
 
 namespace {

@@ -41,11 +41,7 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     // Physical velocity: the same interpolation applied to the generalized velocities.
     w.resize(b.size());
     const auto& N = b.interpolation;
-    for (std::size_t j = 0; j < b.size(); ++j) {
-      Vec3 s = Vec3::Zero();
-      for (Index k = N.row_offset[j]; k < N.row_offset[j + 1]; ++k) s += N.psi[k] * b.v[N.col[k]];
-      w[j] = s;
-    }
+    for (std::size_t j = 0; j < b.size(); ++j) w[j] = rk::interpolate(N, b.v, static_cast<Index>(j));
     for (std::size_t i = 0; i < b.size(); ++i) {
       positions.push_back(b.cloud.X[i] + u[i]);
       displacement.values.insert(displacement.values.end(), u[i].data(), u[i].data() + 3);

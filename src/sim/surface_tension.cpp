@@ -66,17 +66,7 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
 }
 
 void SurfaceTension::update_points() const {
-  const auto& N = body_.interpolation;
-  const bool interpolate = !N.row_offset.empty();
-  for (Index J : nodes_) {
-    if (!interpolate) {
-      points_[J] = body_.x[J];
-      continue;
-    }
-    Vec3 u = Vec3::Zero();
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body_.d[N.col[k]];
-    points_[J] = body_.cloud.X[J] + u;
-  }
+  for (Index J : nodes_) points_[J] = physical_point(body_, J);
 }
 
 double SurfaceTension::measure_area() const {

@@ -15,17 +15,6 @@ namespace rkpm::sim {
 namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// Physical position p_J = X_J + sum_I Psi_I(X_J) d_I (X + d without RK operators).
-Vec3 physical_point(const Body& body, Index J) {
-  const auto& N = body.interpolation;
-  if (N.row_offset.empty()) return body.x[J];
-  Vec3 u = Vec3::Zero();
-  for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) u += N.psi[k] * body.d[N.col[k]];
-  return body.cloud.X[J] + u;
-}
-}  // namespace
-
-namespace {
 const WallContactSettings& checked(const WallContactSettings& s) {
   if (!(s.distance > 0.0) || !(s.pressure > 0.0) || !(s.exclusion > s.distance) || !(s.skin >= 0.0))
     throw std::invalid_argument(fmt::format("wall_contact: expected distance > 0, pressure > 0, exclusion > distance "

@@ -83,6 +83,15 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk);
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk);
 
+// sum_I Psi_I(X_J) v_I over row J: the field of the generalized values v at particle J
+// (physical displacement from d, physical velocity from v). The one interpolation
+// gather every per-point value uses.
+inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v, Index J) {
+  Vec3 s = Vec3::Zero();
+  for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) s += N.psi[k] * v[N.col[k]];
+  return s;
+}
+
 // sum_I v_I (x) b_I(X_L) over row L: F_L from positions, Grad_X h from directors, dF/dt
 // from velocities. The one gather every per-point gradient uses.
 inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {

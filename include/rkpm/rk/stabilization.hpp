@@ -34,9 +34,7 @@ struct Stabilization {
 
 // r_L = d_L - sum_I Psi_I(X_L) d_I: how far d_L is from the field it interpolates.
 inline Vec3 interpolation_residual(const NodalInterpolation& N, const std::vector<Vec3>& d, Index L) {
-  Vec3 interpolated = Vec3::Zero();
-  for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) interpolated += N.psi[k] * d[N.col[k]];
-  return d[L] - interpolated;
+  return d[L] - interpolate(N, d, L);
 }
 
 // alpha = 0 gives an inactive stabilization. shear_modulus has one entry per particle.

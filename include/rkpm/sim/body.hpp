@@ -100,6 +100,13 @@ double strain_energy(const Body& body);
 // Physical displacement u(X_J) = sum_I Psi_I(X_J) d_I at every particle.
 void physical_displacement(const Body& body, std::vector<Vec3>& u);
 
+// Physical position p_J = X_J + u(X_J) of one particle (X + d for a body without RK
+// operators, as in some tests): where contact and surface terms act.
+inline Vec3 physical_point(const Body& body, Index J) {
+  if (body.interpolation.row_offset.empty()) return body.x[J];
+  return body.cloud.X[J] + rk::interpolate(body.interpolation, body.d, J);
+}
+
 // Current outward unit normals of the boundary particles (area-weighted over the
 // boundary faces at the generalized positions x), indexed like cloud.boundary_particles.
 void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
