@@ -168,6 +168,20 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals) {
   }
 }
 
+double shear_modulus(const Body& body, Index L) {
+  if (const auto* lce = std::get_if<LCEMaterial>(&body.material)) return lce->model.mu;
+  return std::get<MooneyRivlinMaterial>(body.material).at_point[static_cast<std::size_t>(L)].shear_modulus();
+}
+
+double mean_shear_modulus(const Body& body) {
+  double weighted = 0.0, volume = 0.0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    weighted += body.cloud.volume[i] * shear_modulus(body, static_cast<Index>(i));
+    volume += body.cloud.volume[i];
+  }
+  return weighted / volume;
+}
+
 double material_stable_dt(const Body& body) {
   const auto n = static_cast<Index>(body.F.size());
   double dt = std::numeric_limits<double>::infinity();

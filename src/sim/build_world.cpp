@@ -155,10 +155,9 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
 }
 
 // Small-strain shear modulus at each point: the stiffness scale of the stabilization.
-std::vector<double> shear_moduli(const Material& material, std::size_t n) {
-  if (const auto* lce = std::get_if<LCEMaterial>(&material)) return std::vector<double>(n, lce->model.mu);
-  std::vector<double> mu;
-  for (const auto& m : std::get<MooneyRivlinMaterial>(material).at_point) mu.push_back(m.shear_modulus());
+std::vector<double> shear_moduli(const Body& body) {
+  std::vector<double> mu(body.size());
+  for (std::size_t i = 0; i < mu.size(); ++i) mu[i] = shear_modulus(body, static_cast<Index>(i));
   return mu;
 }
 
@@ -239,7 +238,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.material), body->name, e.what()));
   }
   body->stabilization =
-      rk::build_stabilization(cloud.volume, shear_moduli(body->material, n), spec.rk.real("stabilization"));
+      rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
 
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");

@@ -29,11 +29,6 @@ double LennardJones::stiffness(double r) const {
   return std::max(std::abs(second_derivative(r)), std::abs(derivative(r)) / r);
 }
 
-double shear_modulus_at(const Body& body, std::size_t i) {
-  if (const auto* lce = std::get_if<LCEMaterial>(&body.material)) return lce->model.mu;
-  return std::get<MooneyRivlinMaterial>(body.material).at_point[i].shear_modulus();
-}
-
 namespace {
 
 // n_I = beta V_I; beta = 0 means one molecule per particle on average (N / total volume).
@@ -60,16 +55,9 @@ Contact::Contact(Body& a, Body& b, const ContactSettings& s)
   if (law_ == StiffnessLaw::linear) {
     const Body& sub = substrate_ == 0 ? a : b;
     mu_reference_ = s.stiffness_reference;
-    if (mu_reference_ == 0.0) {
-      double weighted = 0.0, volume = 0.0;
-      for (std::size_t i = 0; i < sub.size(); ++i) {
-        weighted += sub.cloud.volume[i] * shear_modulus_at(sub, i);
-        volume += sub.cloud.volume[i];
-      }
-      mu_reference_ = weighted / volume;
-    }
+    if (mu_reference_ == 0.0) mu_reference_ = mean_shear_modulus(sub);
     auto& n = molecules_[substrate_];
-    for (std::size_t i = 0; i < n.size(); ++i) n[i] *= shear_modulus_at(sub, i) / mu_reference_;
+    for (std::size_t i = 0; i < n.size(); ++i) n[i] *= shear_modulus(sub, static_cast<Index>(i)) / mu_reference_;
   }
   force_[0].assign(a.size(), Vec3::Zero());
   force_[1].assign(b.size(), Vec3::Zero());

@@ -10,11 +10,6 @@ namespace rkpm::sim {
 
 namespace {
 
-double reference_modulus(const Body& body) {
-  if (const auto* lce = std::get_if<LCEMaterial>(&body.material)) return lce->model.mu;
-  return std::get<MooneyRivlinMaterial>(body.material).at_point.front().shear_modulus();
-}
-
 double body_volume(const Body& body) {
   double v = 0.0;
   for (double w : body.gradient.weight) v += w;
@@ -242,7 +237,7 @@ void Integrator::update_convergence() {
   double residual = 0.0, reference_energy = 0.0;
   for (const auto& bp : world_.bodies) {
     const Body& b = *bp;
-    const double mu = reference_modulus(b);
+    const double mu = mean_shear_modulus(b);
     reference_energy += mu * body_volume(b);
     const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static) reduction(max : residual)

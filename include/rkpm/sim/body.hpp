@@ -121,6 +121,16 @@ struct DirectorStep {
 };
 DirectorStep advance_director(Body& body, double dt);
 
+// The body's reference stiffness, defined once: the small-strain shear modulus mu of
+// the material at integration point (= particle) L [Pa]. The stabilization's
+// stiffness scale and the contact stiffness law (eps_J = eps mu_J / mu_ref) use it
+// per point.
+double shear_modulus(const Body& body, Index L);
+// Its volume-weighted mean over the body, sum_I V_I mu_I / sum_I V_I [Pa]: the scale
+// of the relaxation criterion and the contact law's default mu_ref. For a graded
+// substrate it does not depend on which particle comes first.
+double mean_shear_modulus(const Body& body);
+
 // Largest stable time step of the body's material: safety * min_I spacing_I / c_I.
 double material_stable_dt(const Body& body);
 

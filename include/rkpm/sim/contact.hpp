@@ -131,7 +131,4 @@ class Contact final : public Term {
   double seconds_ = 0.0;
 };
 
-// Small-strain shear modulus of a body at particle i (Mooney-Rivlin: 2 (c1 + c2); LCE: mu).
-double shear_modulus_at(const Body& body, std::size_t i);
-
 }  // namespace rkpm::sim
