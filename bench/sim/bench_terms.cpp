@@ -4,8 +4,8 @@
 #include "fixtures.hpp"
 
 #include "rkpm/sim/body.hpp"
-#include "rkpm/sim/contact.hpp"
-#include "rkpm/sim/surface_tension.hpp"
+#include "terms/contact/contact.hpp"
+#include "terms/surface_tension/surface_tension.hpp"
 
 #include <algorithm>
 #include <vector>

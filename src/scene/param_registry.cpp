@@ -1,6 +1,7 @@
 #include "rkpm/scene/param_registry.hpp"
 
 #include "tables/tables.hpp"
+#include "terms/catalog.hpp"
 
 #include <stdexcept>
 
@@ -41,7 +42,7 @@ ParamRegistry::ParamRegistry() {
 
   append(tables_, tables::body_details());
 
-  auto terms = tables::terms();
+  auto terms = rkpm::terms::term_tables();
   tables_.push_back(selector_section("term", "type", terms,
                                      "A physics term. Only the terms a scene declares are built."));
   append(tables_, std::move(terms));

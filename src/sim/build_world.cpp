@@ -6,7 +6,8 @@
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/scene/cloud_recipe.hpp"
-#include "rkpm/sim/terms.hpp"
+#include "rkpm/sim/body_points.hpp"
+#include "terms/catalog.hpp"
 
 #include <fmt/format.h>
 
@@ -324,7 +325,7 @@ std::unique_ptr<World> build_world(const scene::Scene& scene) {
     world->bodies.push_back(build_body(spec, id++, seed, warning));
     if (!warning.empty()) world->setup_warnings.push_back(warning);
   }
-  for (const auto& term : scene.terms) world->terms.push_back(make_term(term, *world));
+  for (const auto& term : scene.terms) world->terms.push_back(terms::make_term(term, *world));
   return world;
 }
 

@@ -1,8 +1,6 @@
 #include "rkpm/sim/history.hpp"
 
 #include "rkpm/io/json.hpp"
-#include "rkpm/sim/contact.hpp"
-#include "rkpm/sim/volume_constraint.hpp"
 
 #include <fmt/format.h>
 
@@ -24,10 +22,7 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
   out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,director_work,dissipated,energy_error,residual,"
           "min_J";
   for (const auto& t : world.terms)
-    if (dynamic_cast<const VolumeConstraint*>(t.get())) out_ << ",enclosed_volume_ratio,enclosed_pressure";
-  for (const auto& t : world.terms)
-    if (const auto* c = dynamic_cast<const Contact*>(t.get()); c && c->has_report())
-      out_ << ",centroid_x,centroid_y,centroid_z,min_gap,contact_radius,contact_particles";
+    for (const auto& column : t->history_columns()) out_ << "," << column;
   if (shape_body_) out_ << ",volume,area,reduced_volume,h_min_over_h_max,inner_gap_min";
   out_ << "\n";
 }
@@ -37,15 +32,7 @@ void History::record(const World& world, Integrator& integrator) {
   out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
                       world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
                       e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
-  for (const auto& t : world.terms)
-    if (const auto* vc = dynamic_cast<const VolumeConstraint*>(t.get()))
-      out_ << fmt::format(",{:.10g},{:.6g}", vc->volume() / vc->initial_volume(), vc->pressure());
-  for (const auto& t : world.terms)
-    if (const auto* c = dynamic_cast<const Contact*>(t.get()); c && c->has_report()) {
-      const ContactSample s = c->sample();
-      out_ << fmt::format(",{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{}", s.centroid.x(), s.centroid.y(), s.centroid.z(),
-                          s.min_gap, s.contact_radius, s.contact_particles);
-    }
+  for (const auto& t : world.terms) out_ << t->history_values(world);
   if (shape_body_) {
     // The whole shape report is a pass over the surface particles: cheap next to a step.
     // Fields that cannot be measured in this state stay empty.

@@ -12,7 +12,7 @@
 #include "contact_fixtures.hpp"
 
 #include "rkpm/sim/build.hpp"
-#include "rkpm/sim/contact.hpp"
+#include "terms/contact/contact.hpp"
 #include "rkpm/sim/integrator.hpp"
 
 #include <gtest/gtest.h>

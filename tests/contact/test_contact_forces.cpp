@@ -8,7 +8,7 @@
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/scene/scene_error.hpp"
 #include "rkpm/sim/build.hpp"
-#include "rkpm/sim/contact.hpp"
+#include "terms/contact/contact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -134,6 +134,7 @@ TEST(ContactStiffnessLaw, ScalesEpsByTheSubstrateShearModulus) {
   s.beta = {1.0, 1.0};
   Contact uniform(*probe, *sub, s);
   s.law = StiffnessLaw::linear;
+  s.substrate = "substrate";
   Contact graded(*probe, *sub, s);
   EXPECT_DOUBLE_EQ(graded.molecules(1)[0], 0.5);  // 1000 / 2000
   EXPECT_DOUBLE_EQ(graded.molecules(1)[1], 1.5);

@@ -23,7 +23,7 @@
 
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/integrator.hpp"
-#include "rkpm/sim/surface_tension.hpp"
+#include "terms/surface_tension/surface_tension.hpp"
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@
 // an infinite half-space up to the cutoff; traction = force on the column / its area.
 #include "contact_fixtures.hpp"
 
-#include "rkpm/sim/contact.hpp"
+#include "terms/contact/contact.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // particle moved less than skin/2 since the last build).
 #include "contact_fixtures.hpp"
 
-#include "rkpm/sim/contact.hpp"
-#include "rkpm/sim/contact_pairs.hpp"
+#include "terms/contact/contact.hpp"
+#include "terms/contact/contact_pairs.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/integrator.hpp"
-#include "rkpm/sim/surface_tension.hpp"
+#include "terms/surface_tension/surface_tension.hpp"
 
 #include <gtest/gtest.h>
 

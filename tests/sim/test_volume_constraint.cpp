@@ -7,7 +7,7 @@
 // error that shrinks with refinement (measured: 27 % RMS at face_cells 6, 18 % at 12).
 #include "sim_fixtures.hpp"
 
-#include "rkpm/sim/volume_constraint.hpp"
+#include "terms/volume_constraint/volume_constraint.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "sim_fixtures.hpp"
 
 #include "rkpm/sim/history.hpp"
-#include "rkpm/sim/wall_contact.hpp"
+#include "terms/wall_contact/wall_contact.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The one place that knows every parameter table: the run sections, the body
 // sub-tables, the cloud generators, the materials and the physics terms. A new
-// term or material declares its table in its own file and is listed once in
-// src/scene/tables/ (see term_list.cpp); validation, the `rkpm params` reference
-// and the choice lists ("generator", "model", "type") then follow automatically.
+// term declares its table in its own folder and is listed once in the term catalog
+// (src/terms/catalog.def); validation, the `rkpm params` reference and the choice
+// lists ("generator", "model", "type") then follow automatically.
 #pragma once
 
 #include "rkpm/scene/param_spec.hpp"

@@ -34,6 +34,10 @@ class Term {
   virtual double stable_dt(const World&) const { return std::numeric_limits<double>::infinity(); }
   // Adds the term's own metrics to the run summary.
   virtual void report(const World&, io::Json&) const {}
+  // Columns the term adds to history.csv: their names, and their values at the present
+  // state as text, each preceded by a comma (",0.98,12.5"). None by default.
+  virtual std::vector<std::string> history_columns() const { return {}; }
+  virtual std::string history_values(const World&) const { return {}; }
   // Checkpoint state beyond the bodies (empty for stateless terms).
   virtual std::vector<double> save_state() const { return {}; }
   virtual void load_state(const std::vector<double>&) {}

@@ -13,6 +13,5 @@ ParamTable body();                          // [[body]]
 std::vector<ParamTable> body_details();     // [body.director], [body.rk], [body.initial], [[body.boundary]]
 std::vector<ParamTable> cloud_generators(); // variants of [body.cloud], selected by `generator`
 std::vector<ParamTable> materials();        // variants of [body.material], selected by `model`
-std::vector<ParamTable> terms();            // variants of [[term]], selected by `type` (term_list.cpp)
 
 }  // namespace rkpm::scene::tables

@@ -19,8 +19,9 @@
 // particle sums its own row, so the result does not depend on the thread count.
 #pragma once
 
-#include "rkpm/sim/contact.hpp"
-#include "rkpm/sim/contact_pairs.hpp"
+#include "terms/contact/contact.hpp"
+#include "terms/contact/contact_pairs.hpp"
+#include "terms/wall_contact/settings.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <limits>
@@ -28,14 +29,6 @@
 #include <vector>
 
 namespace rkpm::sim {
-
-struct WallContactSettings {
-  std::string surface;     // a named surface of the body
-  double distance = 0.0;   // s0 [m]
-  double pressure = 0.0;   // p0 [Pa]
-  double exclusion = 0.0;  // reference distance below which pairs do not interact [m]; > s0
-  double skin = 0.0;       // Verlet skin [m]
-};
 
 class WallContact final : public Term {
  public:

@@ -1,4 +1,9 @@
-#include "rkpm/sim/wall_contact.hpp"
+#include "terms/wall_contact/wall_contact.hpp"
+
+#include "terms/catalog.hpp"
+#include "terms/term_support.hpp"
+
+#include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/io/json.hpp"
 
@@ -86,16 +91,7 @@ void WallContact::add_forces(World&) {
   }
   // Generalized forces sum_J Psi_I(X_J) f_J: only particles in contact carry a force,
   // so a serial scatter over them is cheap and keeps a fixed order.
-  const auto& N = body_.interpolation;
-  for (Index i = 0; i < n; ++i) {
-    if (force_[i].isZero(0.0)) continue;
-    const Index J = particles_[i];
-    if (N.row_offset.empty()) {
-      body_.force[J] += force_[i];
-      continue;
-    }
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body_.force[N.col[k]] += N.psi[k] * force_[i];
-  }
+  add_point_forces(body_, particles_, 1.0, [&](std::size_t i) -> const Vec3& { return force_[i]; });
   double energy = 0.0, closest2 = kInfinity;  // serial, in particle order
   for (Index i = 0; i < n; ++i) {
     energy += row_energy_[i];
@@ -149,3 +145,23 @@ void WallContact::report(const World&, io::Json& summary) const {
 }
 
 }  // namespace rkpm::sim
+
+namespace rkpm::terms::wall_contact {
+
+std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
+  const sim::WallContactSettings s = settings_table().read(params);
+  sim::Body& body = named_body(world, params, s.body);
+  auto term = constructed(params, [&] { return std::make_unique<sim::WallContact>(body, s); });
+  // A square lattice of spacing a has holes a / sqrt(2) from their corners: beyond
+  // a = sqrt(2) s0 a particle of one wall can pass between those of the other.
+  if (term->surface_spacing() > std::sqrt(2.0) * s.distance)
+    world.setup_warnings.push_back(fmt::format(
+        "{}:{}: [term] wall_contact: distance = {:.3g} m is below the particle spacing of surface \"{}\" "
+        "divided by sqrt(2) (spacing {:.3g} m, the root of the mean particle area): a particle of one wall can "
+        "pass between the particles of the other. Use distance >= {:.3g} m or a finer cloud.",
+        params.file(), params.line("distance"), s.distance, s.surface, term->surface_spacing(),
+        term->surface_spacing() / std::sqrt(2.0)));
+  return term;
+}
+
+}  // namespace rkpm::terms::wall_contact

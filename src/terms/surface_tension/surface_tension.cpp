@@ -1,4 +1,10 @@
-#include "rkpm/sim/surface_tension.hpp"
+#include "terms/surface_tension/surface_tension.hpp"
+
+#include "terms/catalog.hpp"
+#include "terms/surface_tension/settings.hpp"
+#include "terms/term_support.hpp"
+
+#include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/io/json.hpp"
 
@@ -45,7 +51,7 @@ double face_area(const particles::BoundaryFace& face, const std::vector<Vec3>& x
 SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double gamma)
     : body_(body), surface_(surface), gamma_(gamma) {
   const auto& cloud = body.cloud;
-  const std::uint32_t surface_bit = surface == "all" ? 0u : cloud.surface_bit(surface);
+  const std::uint32_t surface_bit = surface_selector(body, surface);
   if (surface != "all" && surface_bit == 0u)
     throw std::invalid_argument("surface_tension: body '" + body.name + "' has no surface named '" + surface + "'");
   for (std::size_t f = 0; f < cloud.boundary_faces.size(); ++f) {
@@ -66,7 +72,7 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
 }
 
 void SurfaceTension::update_points() const {
-  for (Index J : nodes_) points_[J] = physical_point(body_, J);
+  physical_points(body_, nodes_, points_);
 }
 
 double SurfaceTension::measure_area() const {
@@ -89,14 +95,7 @@ void SurfaceTension::add_forces(World&) {
     for (int k = 0; k < face.n_nodes; ++k) gradient_[face.nodes[k]] += grad[k];
   }
   // f_I = -gamma sum_J Psi_I(X_J) dA/dp_J.
-  const auto& N = body_.interpolation;
-  for (Index J : nodes_) {
-    if (N.row_offset.empty()) {
-      body_.force[J] -= gamma_ * gradient_[J];
-      continue;
-    }
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body_.force[N.col[k]] -= (gamma_ * N.psi[k]) * gradient_[J];
-  }
+  add_point_forces(body_, nodes_, -gamma_, [&](std::size_t i) -> const Vec3& { return gradient_[nodes_[i]]; });
   area_ = area;
 }
 
@@ -135,3 +134,13 @@ void SurfaceTension::report(const World&, io::Json& summary) const {
 }
 
 }  // namespace rkpm::sim
+
+namespace rkpm::terms::surface_tension {
+
+std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
+  const sim::SurfaceTensionSettings s = settings_table().read(params);
+  sim::Body& body = named_body(world, params, s.body);
+  return constructed(params, [&] { return std::make_unique<sim::SurfaceTension>(body, s.surface, s.gamma); });
+}
+
+}  // namespace rkpm::terms::surface_tension

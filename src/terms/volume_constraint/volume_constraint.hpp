@@ -36,6 +36,8 @@ class VolumeConstraint final : public Term {
   void add_forces(World&) override;
   double stored_energy(const World&) const override;
   void report(const World&, io::Json&) const override;
+  std::vector<std::string> history_columns() const override { return {"enclosed_volume_ratio", "enclosed_pressure"}; }
+  std::string history_values(const World&) const override;
 
   double volume() const { return volume_; }            // [m^3] at the last force evaluation
   double initial_volume() const { return initial_; }  // V0 [m^3]

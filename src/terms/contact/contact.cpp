@@ -1,6 +1,13 @@
-#include "rkpm/sim/contact.hpp"
+#include "terms/contact/contact.hpp"
+
+#include "terms/catalog.hpp"
+#include "terms/term_support.hpp"
+
+#include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/io/json.hpp"
+
+#include <fmt/format.h>
 
 #include <chrono>
 #include <cmath>
@@ -48,7 +55,7 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 
 Contact::Contact(Body& a, Body& b, const ContactSettings& s)
     : a_(a), b_(b), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
-      pairs_(s.cutoff, s.skin), law_(s.law), substrate_(s.substrate) {
+      pairs_(s.cutoff, s.skin), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
   molecules_[1] = molecules_of(b, s.beta[1]);
@@ -80,38 +87,12 @@ ContactSample Contact::sample() const {
 
 namespace {
 
-// Physical positions p_J = X_J + sum_I Psi_I(X_J) d_I of every particle (X + d without RK operators).
-void all_physical_points(const Body& body, std::vector<Vec3>& p) {
-  const auto n = static_cast<Index>(body.size());
-  p.resize(body.size());
-#pragma omp parallel for schedule(static)
-  for (Index J = 0; J < n; ++J) p[J] = physical_point(body, J);
-}
-
-// Forces f_J on the physical points become generalized forces sum_J Psi_I(X_J) f_J,
-// gathered per particle I through the transpose (fixed order, no atomics).
-void add_generalized(Body& body, const std::vector<Vec3>& f) {
-  const auto& N = body.interpolation;
-  const auto n = static_cast<Index>(body.size());
-  if (N.row_offset.empty()) {
-    for (Index i = 0; i < n; ++i) body.force[i] += f[i];
-    return;
-  }
-  const auto& T = N.transpose;
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    Vec3 s = Vec3::Zero();
-    for (Index e = T.offset[I]; e < T.offset[I + 1]; ++e) s += N.psi[T.entry[e]] * f[T.row[e]];
-    body.force[I] += s;
-  }
-}
-
 }  // namespace
 
 void Contact::add_forces(World&) {
   const auto start = std::chrono::steady_clock::now();
-  all_physical_points(a_, points_[0]);
-  all_physical_points(b_, points_[1]);
+  physical_points(a_, points_[0]);
+  physical_points(b_, points_[1]);
   const auto& pa = points_[0];
   const auto& pb = points_[1];
   pairs_.update(pa, pb);
@@ -157,8 +138,8 @@ void Contact::add_forces(World&) {
     for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) fj -= pair_force_[col_entry[k]];
     force_[1][j] = fj;
   }
-  add_generalized(a_, force_[0]);
-  add_generalized(b_, force_[1]);
+  add_point_forces(a_, force_[0]);
+  add_point_forces(b_, force_[1]);
 
   double energy = 0.0;  // serial, in particle order: the same sum for any thread count
   for (double e : row_energy_) energy += e;
@@ -247,4 +228,27 @@ void Contact::report(const World&, io::Json& summary) const {
   summary.set("contact " + a_.name + " " + b_.name, j);
 }
 
+std::vector<std::string> Contact::history_columns() const {
+  if (!has_report()) return {};
+  return {"centroid_x", "centroid_y", "centroid_z", "min_gap", "contact_radius", "contact_particles"};
+}
+
+std::string Contact::history_values(const World&) const {
+  if (!has_report()) return {};
+  const ContactSample s = sample();
+  return fmt::format(",{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{}", s.centroid.x(), s.centroid.y(), s.centroid.z(),
+                     s.min_gap, s.contact_radius, s.contact_particles);
+}
+
 }  // namespace rkpm::sim
+
+namespace rkpm::terms::contact {
+
+std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
+  const sim::ContactSettings s = settings_table().read(params);
+  sim::Body& a = named_body(world, params, s.bodies[0]);
+  sim::Body& b = named_body(world, params, s.bodies[1]);
+  return constructed(params, [&]() -> std::unique_ptr<sim::Term> { return std::make_unique<sim::Contact>(a, b, s); });
+}
+
+}  // namespace rkpm::terms::contact

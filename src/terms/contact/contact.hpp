@@ -31,8 +31,9 @@
 // Pairs come from a Verlet list with a skin (contact_pairs.hpp).
 #pragma once
 
-#include "rkpm/sim/contact_pairs.hpp"
-#include "rkpm/sim/contact_report.hpp"
+#include "terms/contact/contact_pairs.hpp"
+#include "terms/contact/contact_report.hpp"
+#include "terms/contact/settings.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <array>
@@ -61,21 +62,6 @@ struct LennardJones {
   }
 };
 
-enum class StiffnessLaw { none, linear };
-
-struct ContactSettings {
-  double epsilon = 0.0;                 // eps [J]
-  double s0 = 0.0;                      // sigma0 [m]
-  double cutoff = 0.0;                  // [m]
-  double skin = 0.0;                    // [m]
-  std::array<double, 2> beta = {0.0, 0.0};  // molecules per reference volume [1/m^3]; 0: particles / volume
-  StiffnessLaw law = StiffnessLaw::none;
-  int substrate = 1;                    // which body (0 or 1) carries the stiffness law
-  double stiffness_reference = 0.0;     // mu_ref [Pa]; 0: volume-weighted mean over the substrate
-  std::string report_surface;           // surface of body B for the gap report (contact_report.hpp); empty: none
-  double contact_gap = 0.0;             // patch threshold of the report [m]; 0: s0
-};
-
 class Contact final : public Term {
  public:
   Contact(Body& a, Body& b, const ContactSettings& settings);
@@ -88,6 +74,9 @@ class Contact final : public Term {
   // and dt = 2 / omega. The integrator multiplies by dt_safety and re-estimates every 10 steps.
   double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
+  // With a report surface: the first body's centroid, smallest gap and contact patch.
+  std::vector<std::string> history_columns() const override;
+  std::string history_values(const World&) const override;
 
   // At the last force evaluation: the energy, the number of pairs inside the cutoff,
   // the total force on body A (B carries its opposite).

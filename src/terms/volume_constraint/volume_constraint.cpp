@@ -1,6 +1,13 @@
-#include "rkpm/sim/volume_constraint.hpp"
+#include "terms/volume_constraint/volume_constraint.hpp"
+
+#include "terms/catalog.hpp"
+#include "terms/term_support.hpp"
+#include "terms/volume_constraint/settings.hpp"
 
 #include "rkpm/io/json.hpp"
+#include "rkpm/sim/body_points.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -110,4 +117,18 @@ void VolumeConstraint::report(const World&, io::Json& summary) const {
   summary.set("volume_constraint", j);
 }
 
+std::string VolumeConstraint::history_values(const World&) const {
+  return fmt::format(",{:.10g},{:.6g}", volume() / initial_volume(), pressure());
+}
+
 }  // namespace rkpm::sim
+
+namespace rkpm::terms::volume_constraint {
+
+std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
+  const sim::VolumeConstraintSettings s = settings_table().read(params);
+  sim::Body& body = named_body(world, params, s.body);
+  return std::make_unique<sim::VolumeConstraint>(body, surface_selector(body, s.surface), s.bulk, s.target);
+}
+
+}  // namespace rkpm::terms::volume_constraint

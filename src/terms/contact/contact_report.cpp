@@ -1,4 +1,6 @@
-#include "rkpm/sim/contact_report.hpp"
+#include "terms/contact/contact_report.hpp"
+
+#include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/rk/neighbor_search.hpp"
 
@@ -8,11 +10,6 @@
 #include <stdexcept>
 
 namespace rkpm::sim {
-
-void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out) {
-  out.resize(body.size());
-  for (Index J : particles) out[J] = physical_point(body, J);
-}
 
 namespace {
 

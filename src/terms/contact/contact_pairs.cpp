@@ -1,4 +1,4 @@
-#include "rkpm/sim/contact_pairs.hpp"
+#include "terms/contact/contact_pairs.hpp"
 
 #include "rkpm/rk/neighbor_search.hpp"
 

@@ -1,0 +1,52 @@
+// What every surface and contact term needs from a body: the physical points of its
+// particles, and the transfer of forces acting at those points to the generalized
+// coordinates d the integrator advances.
+//
+// The physical position of particle J is p_J = X_J + u(X_J), u(X_J) = sum_I Psi_I(X_J) d_I
+// (body.hpp). A force f_J acting at p_J does virtual work f_J . delta p_J =
+// sum_I Psi_I(X_J) f_J . delta d_I, so it enters the generalized force of particle I
+// as sum_J Psi_I(X_J) f_J. Bodies without RK operators (some tests) use p = x = X + d
+// and receive f_J directly.
+#pragma once
+
+#include "rkpm/sim/body.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rkpm::sim {
+
+// p_J for every particle (parallel), out indexed by particle.
+void physical_points(const Body& body, std::vector<Vec3>& out);
+// p_J for the listed particles only; out is indexed by particle (its other entries untouched).
+void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out);
+
+// Generalized forces of point forces at every particle: force_I += sum_J Psi_I(X_J) f_J,
+// gathered per particle I through the interpolation's transpose (parallel, fixed order).
+void add_point_forces(Body& body, const std::vector<Vec3>& f);
+
+// The same for forces at a few listed particles (a surface, the pairs in contact):
+// force_I += sum_i (scale Psi_I(X_{J_i})) f_i with J_i = particles[i] and f_i =
+// force_at(i). A serial scatter in list order: cheap for a small set and deterministic.
+// Zero forces are skipped.
+template <class ForceAt>
+void add_point_forces(Body& body, const std::vector<Index>& particles, double scale, ForceAt force_at) {
+  const auto& N = body.interpolation;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Vec3& f = force_at(i);
+    if (f.isZero(0.0)) continue;
+    const Index J = particles[i];
+    if (N.row_offset.empty()) {
+      body.force[J] += scale * f;
+      continue;
+    }
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body.force[N.col[k]] += (scale * N.psi[k]) * f;
+  }
+}
+
+// The surface-mask bit of a named surface of the body's cloud; 0 for "all" (every
+// boundary particle or facet qualifies).
+std::uint32_t surface_selector(const Body& body, const std::string& surface);
+
+}  // namespace rkpm::sim

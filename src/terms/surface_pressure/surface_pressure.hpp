@@ -1,0 +1,29 @@
+// Follower pressure on a named surface: traction -p n in the current configuration,
+// integrated with the boundary quadrature of the SCNI cells. By Nanson's formula the
+// current area vector of a facet of cell L is J_L F_L^-T A, with the smoothed F_L:
+//   f_I = -p sum_f Psi_I(X_f) J_L F_L^-T A_f.
+#pragma once
+
+#include "rkpm/sim/world.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace rkpm::sim {
+
+class SurfacePressure final : public Term {
+ public:
+  // surface_bit = 0: every boundary facet.
+  SurfacePressure(Body& body, std::uint32_t surface_bit, double pressure);
+  std::string name() const override { return "surface_pressure"; }
+  void add_forces(World&) override;
+  double power(const World&) const override;
+
+ private:
+  Body& body_;
+  std::vector<std::size_t> facets_;  // boundary-quadrature points on the surface
+  double pressure_;
+  std::vector<Vec3> force_;          // last forces, for the power
+};
+
+}  // namespace rkpm::sim
