@@ -63,4 +63,7 @@ struct World {
 // Internal forces of every body, then every term's forces.
 void compute_forces(World& world);
 
+// Kinetic energy sum_I m_I |v_I|^2 / 2 of every body [J].
+double kinetic_energy(const World& world);
+
 }  // namespace rkpm::sim
