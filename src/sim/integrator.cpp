@@ -286,42 +286,41 @@ void Integrator::check_state() {
   min_J_ = min_J;
 }
 
-std::vector<double> Integrator::save_state() const {
-  return {dt_,
-          stable_dt_,
-          ledger_.external,
-          ledger_.active,
-          ledger_.dissipated,
-          ledger_.initial,
-          ledger_.director,
-          term_power_,
-          active_power_,
-          support_power_,
-          fire_.alpha(),
-          static_cast<double>(fire_.positive_steps()),
-          settings_.domain_size,
-          centre_.x(),
-          centre_.y(),
-          centre_.z(),
-          dt_clamped_ ? 1.0 : 0.0};
+StateRecord Integrator::save_state() const {
+  StateRecord s;
+  s.put_real("dt", dt_);
+  s.put_real("stable_dt", stable_dt_);
+  s.put_integer("dt_clamped", dt_clamped_ ? 1 : 0);
+  s.put_real("ledger.external", ledger_.external);
+  s.put_real("ledger.active", ledger_.active);
+  s.put_real("ledger.dissipated", ledger_.dissipated);
+  s.put_real("ledger.initial", ledger_.initial);
+  s.put_real("ledger.director", ledger_.director);
+  s.put_real("term_power", term_power_);
+  s.put_real("active_power", active_power_);
+  s.put_real("support_power", support_power_);
+  s.put_real("fire.alpha", fire_.alpha());
+  s.put_integer("fire.positive_steps", fire_.positive_steps());
+  s.put_real("domain_size", settings_.domain_size);
+  s.put_vectors("centre", {centre_});
+  return s;
 }
 
-void Integrator::load_state(const std::vector<double>& s) {
-  if (s.size() != 17) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
-  dt_ = s[0];
-  stable_dt_ = s[1];
-  ledger_.external = s[2];
-  ledger_.active = s[3];
-  ledger_.dissipated = s[4];
-  ledger_.initial = s[5];
-  ledger_.director = s[6];
-  term_power_ = s[7];
-  active_power_ = s[8];
-  support_power_ = s[9];
-  fire_ = Fire(s[10], static_cast<std::int64_t>(s[11]));
-  settings_.domain_size = s[12];
-  centre_ = Vec3(s[13], s[14], s[15]);
-  dt_clamped_ = s[16] != 0.0;
+void Integrator::load_state(const StateRecord& s) {
+  dt_ = s.real("dt");
+  stable_dt_ = s.real("stable_dt");
+  dt_clamped_ = s.integer("dt_clamped") != 0;
+  ledger_.external = s.real("ledger.external");
+  ledger_.active = s.real("ledger.active");
+  ledger_.dissipated = s.real("ledger.dissipated");
+  ledger_.initial = s.real("ledger.initial");
+  ledger_.director = s.real("ledger.director");
+  term_power_ = s.real("term_power");
+  active_power_ = s.real("active_power");
+  support_power_ = s.real("support_power");
+  fire_ = Fire(s.real("fire.alpha"), s.integer("fire.positive_steps"));
+  settings_.domain_size = s.real("domain_size");
+  centre_ = s.vectors("centre", 1).front();
 }
 
 }  // namespace rkpm::sim

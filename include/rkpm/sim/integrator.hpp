@@ -5,6 +5,7 @@
 #pragma once
 
 #include "rkpm/sim/fire.hpp"
+#include "rkpm/sim/state_record.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
@@ -74,9 +75,10 @@ class Integrator {
   bool dt_clamped() const { return dt_clamped_; }
   double min_J() const { return min_J_; }
 
-  // Checkpointing: the integrator's own state.
-  std::vector<double> save_state() const;
-  void load_state(const std::vector<double>& state);
+  // Checkpointing: the integrator's own state as named fields (load_state throws
+  // StateError naming a missing or mis-sized field).
+  StateRecord save_state() const;
+  void load_state(const StateRecord& state);
 
  private:
   // What the stages of one step hand to the ledger.

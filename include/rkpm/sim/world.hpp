@@ -3,6 +3,7 @@
 #pragma once
 
 #include "rkpm/sim/body.hpp"
+#include "rkpm/sim/state_record.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -34,9 +35,10 @@ class Term {
   virtual double stable_dt(const World&) const { return std::numeric_limits<double>::infinity(); }
   // Adds the term's own metrics to the run summary.
   virtual void report(const World&, io::Json&) const {}
-  // Checkpoint state beyond the bodies (empty for stateless terms).
-  virtual std::vector<double> save_state() const { return {}; }
-  virtual void load_state(const std::vector<double>&) {}
+  // Checkpoint state beyond the bodies, as named fields (none for stateless terms);
+  // load_state reads them back by name (StateRecord throws on a missing or mis-sized one).
+  virtual void save_state(StateRecord&) const {}
+  virtual void load_state(const StateRecord&) {}
 };
 
 struct World {
