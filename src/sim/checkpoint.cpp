@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <cstring>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -11,58 +13,139 @@ namespace rkpm::sim {
 
 namespace {
 
-constexpr char kMagic[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', '1'};
+// File layout (native byte order):
+//   magic "RKPMCKPT", u32 format version, u64 number of fields,
+//   per field: u32 name length, name, u8 type, u32 components, u64 count, the values,
+//   u64 FNV-1a digest of every byte before it.
+constexpr char kMagic[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', 'T'};
+constexpr char kMagicFormat1[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', '1'};  // positional fields, no version
+constexpr std::uint32_t kFormatVersion = 2;
 
-class Writer {
+std::uint64_t fnv1a(const char* data, std::size_t n) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+std::size_t element_size(StateRecord::Type type) { return type == StateRecord::Type::Text ? 1 : 8; }
+
+template <class T>
+void append(std::string& out, const T& v) {
+  out.append(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+
+std::string encode(const StateRecord& record) {
+  std::string out(kMagic, sizeof kMagic);
+  append(out, kFormatVersion);
+  append<std::uint64_t>(out, record.size());
+  for (const auto& [name, f] : record.fields()) {
+    append<std::uint32_t>(out, static_cast<std::uint32_t>(name.size()));
+    out += name;
+    append(out, static_cast<std::uint8_t>(f.type));
+    append(out, f.components);
+    append(out, f.count);
+    out += f.bytes;
+  }
+  append(out, fnv1a(out.data(), out.size()));
+  return out;
+}
+
+class Decoder {
  public:
-  explicit Writer(std::ofstream& out) : out_(out) {}
-  template <class T>
-  void value(const T& v) { out_.write(reinterpret_cast<const char*>(&v), sizeof(T)); }
-  template <class T>
-  void array(const std::vector<T>& v) {
-    value<std::uint64_t>(v.size());
-    out_.write(reinterpret_cast<const char*>(v.data()), static_cast<std::streamsize>(v.size() * sizeof(T)));
+  Decoder(const std::string& bytes, std::string file) : bytes_(bytes), file_(std::move(file)) {}
+
+  StateRecord decode() {
+    if (bytes_.size() < sizeof kMagic) fail("not an rkpm checkpoint (the file is too short for a header)");
+    if (std::memcmp(bytes_.data(), kMagicFormat1, sizeof kMagic) == 0)
+      fail(fmt::format("written in checkpoint format 1 (positional fields); this build reads format {}",
+                       kFormatVersion));
+    if (std::memcmp(bytes_.data(), kMagic, sizeof kMagic) != 0) fail("not an rkpm checkpoint (bad header)");
+    pos_ = sizeof kMagic;
+    const auto version = value<std::uint32_t>("the format version");
+    if (version != kFormatVersion)
+      fail(fmt::format("checkpoint format version {}; this build reads version {}", version, kFormatVersion));
+    const auto n = value<std::uint64_t>("the number of fields");
+    StateRecord record;
+    for (std::uint64_t k = 0; k < n; ++k) {
+      const std::string where = fmt::format("field {} of {}", k + 1, n);
+      const auto name_length = value<std::uint32_t>(where);
+      if (name_length == 0 || name_length > 4096) fail(fmt::format("{}: corrupt name length {}", where, name_length));
+      std::string name = take(name_length, where);
+      StateRecord::Field f;
+      const auto type = value<std::uint8_t>(name);
+      if (type < 1 || type > 3) fail(fmt::format("field '{}': unknown type code {}", name, type));
+      f.type = static_cast<StateRecord::Type>(type);
+      f.components = value<std::uint32_t>(name);
+      f.count = value<std::uint64_t>(name);
+      const std::size_t left = bytes_.size() - pos_;
+      const std::size_t unit = element_size(f.type);
+      if (f.components == 0 || f.components > 16 || f.count > left / (unit * f.components))
+        fail(fmt::format("field '{}': {} x {} values do not fit in the file (truncated or corrupt)", name,
+                         f.count, f.components));
+      f.bytes = take(f.count * f.components * unit, name);
+      if (record.has(name)) fail(fmt::format("field '{}' appears twice", name));
+      record.put_field(name, std::move(f));
+    }
+    const std::size_t body_end = pos_;
+    const auto stored = value<std::uint64_t>("the closing digest");
+    if (pos_ != bytes_.size()) fail(fmt::format("{} unexpected bytes after the last field", bytes_.size() - pos_));
+    if (stored != fnv1a(bytes_.data(), body_end)) fail("the content does not match its digest (the file is corrupt)");
+    return record;
   }
 
- private:
-  std::ofstream& out_;
-};
-
-class Reader {
- public:
-  Reader(std::ifstream& in, std::string file) : in_(in), file_(std::move(file)) {}
-  template <class T>
-  T value() {
-    T v{};
-    in_.read(reinterpret_cast<char*>(&v), sizeof(T));
-    if (!in_) fail("file ends early");
-    return v;
-  }
-  template <class T>
-  void array(std::vector<T>& v, std::size_t expected, const char* what) {
-    const auto n = value<std::uint64_t>();
-    if (n != expected) fail(fmt::format("{} has {} entries, the scene has {}", what, n, expected));
-    v.resize(n);
-    in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-    if (!in_) fail("file ends early");
-  }
-  template <class T>
-  std::vector<T> array() {
-    const auto n = value<std::uint64_t>();
-    if (n > (1u << 30)) fail("corrupt array length");
-    std::vector<T> v(n);
-    in_.read(reinterpret_cast<char*>(v.data()), static_cast<std::streamsize>(n * sizeof(T)));
-    if (!in_) fail("file ends early");
-    return v;
-  }
   [[noreturn]] void fail(const std::string& why) const {
     throw std::runtime_error(fmt::format("checkpoint {}: {}", file_, why));
   }
 
  private:
-  std::ifstream& in_;
+  template <class T>
+  T value(const std::string& what) {
+    T v{};
+    std::memcpy(&v, take(sizeof(T), what).data(), sizeof(T));
+    return v;
+  }
+  std::string take(std::size_t n, const std::string& what) {
+    if (n > bytes_.size() - pos_) fail(fmt::format("the file ends early, in {} (truncated?)", what));
+    std::string s = bytes_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+
+  const std::string& bytes_;
   std::string file_;
+  std::size_t pos_ = 0;
 };
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : "\n") + n;
+  return s;
+}
+
+std::string listed(const std::string& newline_separated) {
+  if (newline_separated.empty()) return "none";
+  std::string s = newline_separated;
+  for (std::size_t p = 0; (p = s.find('\n', p)) != std::string::npos;) s.replace(p, 1, ", ");
+  return s;
+}
+
+std::string body_names(const World& world) {
+  std::vector<std::string> names;
+  for (const auto& b : world.bodies) names.push_back(b->name);
+  return joined(names);
+}
+
+std::string term_names(const World& world) {
+  std::vector<std::string> names;
+  for (const auto& t : world.terms) names.push_back(t->name());
+  return joined(names);
+}
+
+std::string body_prefix(const Body& b) { return "body." + b.name + "."; }
+std::string term_prefix(std::size_t k) { return fmt::format("term.{}.", k); }
 
 }  // namespace
 
@@ -76,30 +159,42 @@ std::uint64_t file_digest(const std::filesystem::path& path) {
   return h;
 }
 
+StateRecord checkpoint_record(const World& world, const Integrator& integrator, const RunClock& clock,
+                              std::uint64_t scene_digest) {
+  StateRecord r;
+  r.put_integer("scene_digest", static_cast<std::int64_t>(scene_digest));
+  r.put_real("time", world.time);
+  r.put_integer("step", world.step);
+  r.put_real("clock.next_output", clock.next_output);
+  r.put_integer("clock.frames", clock.frames);
+  r.put_record("integrator.", integrator.save_state());
+  r.put_text("bodies", body_names(world));
+  for (const auto& b : world.bodies) {
+    const std::string p = body_prefix(*b);
+    r.put_integer(p + "particles", static_cast<std::int64_t>(b->size()));
+    r.put_vectors(p + "d", b->d);
+    r.put_vectors(p + "v", b->v);
+    r.put_vectors(p + "a", b->a);
+    if (b->director) r.put_vectors(p + "director", b->director->h);
+    r.put_reals(p + "constraint_targets", b->constraints.targets());
+  }
+  r.put_text("terms", term_names(world));
+  for (std::size_t k = 0; k < world.terms.size(); ++k) {
+    StateRecord t;
+    world.terms[k]->save_state(t);
+    r.put_record(term_prefix(k), t);
+  }
+  return r;
+}
+
 void write_checkpoint(const std::filesystem::path& path, const World& world, const Integrator& integrator,
                       const RunClock& clock, std::uint64_t scene_digest) {
+  const std::string bytes = encode(checkpoint_record(world, integrator, clock, scene_digest));
   const auto tmp = path.string() + ".tmp";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw std::runtime_error(fmt::format("checkpoint {}: cannot open for writing", tmp));
-    Writer w(out);
-    out.write(kMagic, sizeof kMagic);
-    w.value(scene_digest);
-    w.value(world.time);
-    w.value(world.step);
-    w.value(clock.next_output);
-    w.value(clock.frames);
-    w.array(integrator.save_state());
-    w.value<std::uint64_t>(world.bodies.size());
-    for (const auto& b : world.bodies) {
-      w.array(b->d);
-      w.array(b->v);
-      w.array(b->a);
-      w.array(b->director ? b->director->h : std::vector<Vec3>{});
-      w.array(b->constraints.targets());
-    }
-    w.value<std::uint64_t>(world.terms.size());
-    for (const auto& t : world.terms) w.array(t->save_state());
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.flush();
     if (!out) throw std::runtime_error(fmt::format("checkpoint {}: write failed", tmp));
   }
@@ -108,35 +203,60 @@ void write_checkpoint(const std::filesystem::path& path, const World& world, con
 
 void read_checkpoint(const std::filesystem::path& path, World& world, Integrator& integrator, RunClock& clock,
                      std::uint64_t scene_digest) {
-  std::ifstream in(path, std::ios::binary);
-  Reader r(in, path.string());
-  if (!in) r.fail("cannot open");
-  char magic[8];
-  in.read(magic, sizeof magic);
-  if (!in || !std::equal(magic, magic + 8, kMagic)) r.fail("not an rkpm checkpoint (bad header)");
-  if (r.value<std::uint64_t>() != scene_digest) r.fail("written for a different scene file (its content changed)");
-  world.time = r.value<double>();
-  world.step = r.value<std::int64_t>();
-  clock.next_output = r.value<double>();
-  clock.frames = r.value<std::int64_t>();
-  const auto integrator_state = r.array<double>();
-  if (r.value<std::uint64_t>() != world.bodies.size()) r.fail("number of bodies differs from the scene");
-  for (auto& b : world.bodies) {
-    r.array(b->d, b->size(), "displacement");
-    r.array(b->v, b->size(), "velocity");
-    r.array(b->a, b->size(), "acceleration");
-    std::vector<Vec3> h;
-    r.array(h, b->director ? b->size() : 0, "director");
-    if (b->director) b->director->h = std::move(h);
-    b->constraints.set_targets(r.array<double>());
-    update_positions(*b);
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error(fmt::format("checkpoint {}: cannot open", path.string()));
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    bytes = ss.str();
   }
-  if (r.value<std::uint64_t>() != world.terms.size()) r.fail("number of terms differs from the scene");
-  for (auto& t : world.terms) t->load_state(r.array<double>());
-  // Forces, F and P at the restored state (deterministic: the same as when written).
-  compute_forces(world);
-  for (auto& b : world.bodies) b->constraints.transform_forces(b->force);
-  integrator.load_state(integrator_state);
+  Decoder decoder(bytes, path.string());
+  const StateRecord r = decoder.decode();
+  const auto fail = [&](const std::string& why) { decoder.fail(why); };
+  try {
+    // What the checkpoint was written for, before anything is loaded.
+    const auto digest = static_cast<std::uint64_t>(r.integer("scene_digest"));
+    if (digest != scene_digest)
+      fail(fmt::format("written for another scene (scene digest {:016x}, this scene file's is {:016x}: the file "
+                       "changed or is another scene)",
+                       digest, scene_digest));
+    if (r.text("bodies") != body_names(world))
+      fail(fmt::format("the bodies differ: the checkpoint has {}, the scene has {}", listed(r.text("bodies")),
+                       listed(body_names(world))));
+    for (const auto& b : world.bodies) {
+      const auto n = r.integer(body_prefix(*b) + "particles");
+      if (n != static_cast<std::int64_t>(b->size()))
+        fail(fmt::format("body '{}' has {} particles in the checkpoint, {} in the scene", b->name, n, b->size()));
+      if (r.has(body_prefix(*b) + "director") != b->director.has_value())
+        fail(fmt::format("body '{}' {} a director in the checkpoint but {} in the scene", b->name,
+                         b->director ? "has no" : "has", b->director ? "has one" : "not"));
+    }
+    if (r.text("terms") != term_names(world))
+      fail(fmt::format("the terms differ: the checkpoint has {}, the scene has {}", listed(r.text("terms")),
+                       listed(term_names(world))));
+
+    world.time = r.real("time");
+    world.step = r.integer("step");
+    clock.next_output = r.real("clock.next_output");
+    clock.frames = r.integer("clock.frames");
+    for (auto& b : world.bodies) {
+      const std::string p = body_prefix(*b);
+      b->d = r.vectors(p + "d", b->size());
+      b->v = r.vectors(p + "v", b->size());
+      b->a = r.vectors(p + "a", b->size());
+      if (b->director) b->director->h = r.vectors(p + "director", b->size());
+      b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
+      update_positions(*b);
+    }
+    for (std::size_t k = 0; k < world.terms.size(); ++k) world.terms[k]->load_state(r.record(term_prefix(k)));
+    // Forces, F and P at the restored state (deterministic: the same as when written).
+    compute_forces(world);
+    for (auto& b : world.bodies) b->constraints.transform_forces(b->force);
+    integrator.load_state(r.record("integrator."));
+  } catch (const StateError& e) {
+    fail(e.what());
+  }
 }
 
 }  // namespace rkpm::sim

@@ -16,10 +16,6 @@ double body_volume(const Body& body) {
   return v;
 }
 
-// FIRE constants (Bitzek et al. 2006).
-constexpr int kFireMinPositive = 5;
-constexpr double kFireIncrease = 1.1, kFireDecrease = 0.5, kFireAlphaStart = 0.1, kFireAlphaShrink = 0.99;
-
 }  // namespace
 
 double EnergyLedger::relative_error() const {
@@ -39,6 +35,9 @@ double Integrator::estimate_stable_dt() const {
   return dt;
 }
 
+// Forces at the new positions (the bodies' internal forces, then every term's), the
+// essential boundary conditions by the transformation method (its reactions' power
+// goes to the ledger), and the accelerations a = f / m with the lumped masses.
 void Integrator::forces_and_accelerations() {
   compute_forces(world_);
   support_power_ = 0.0;
@@ -58,17 +57,6 @@ double Integrator::power_of_terms() const {
   return p;
 }
 
-double Integrator::kinetic_energy() const {
-  double ke = 0.0;
-  for (const auto& bp : world_.bodies) {
-    const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
-#pragma omp parallel for schedule(static) reduction(+ : ke)
-    for (Index i = 0; i < n; ++i) ke += 0.5 * b.mass[i] * b.v[i].squaredNorm();
-  }
-  return ke;
-}
-
 double Integrator::stored_energy() {
   ledger_.strain = 0.0;
   for (const auto& b : world_.bodies) ledger_.strain += strain_energy(*b);
@@ -78,7 +66,7 @@ double Integrator::stored_energy() {
 }
 
 const EnergyLedger& Integrator::measure_energy() {
-  ledger_.kinetic = kinetic_energy();
+  ledger_.kinetic = kinetic_energy(world_);
   stored_energy();
   return ledger_;
 }
@@ -110,36 +98,71 @@ void Integrator::initialize() {
     dt_ = automatic;
   }
   ledger_ = EnergyLedger{};
-  ledger_.kinetic = kinetic_energy();
+  ledger_.kinetic = kinetic_energy(world_);
   ledger_.initial = ledger_.kinetic + stored_energy();
   active_power_ = 0.0;
   check_state();
   update_convergence();
 }
 
+// One step of velocity Verlet (the central-difference scheme with lumped masses) with
+// mass-proportional damping taken implicitly in the second half-kick, followed in the
+// relaxation mode by FIRE, then the director update (Eq. 5-8) at fixed positions; the
+// ledger books the step's energies, the state is checked, and now and then the
+// stable step is re-estimated.
 void Integrator::step() {
-  const double h = dt_;
-  const double c = settings_.mode == Mode::Dynamic ? settings_.damping : 0.0;
-  const double old_term_power = term_power_, old_active_power = active_power_;
-  double damping_power = 0.0;
+  StepBook& book = book_;
+  book.h = dt_;
+  book.old_term_power = term_power_;
+  book.old_active_power = active_power_;
+  book.damping_power = 0.0;
+  book.fire_dissipated = 0.0;
+  book.director_energy.clear();
 
-  // First half kick and drift: v_{n+1/2} = v_n + h/2 (a_n - c v_n), d_{n+1} = d_n + h v_{n+1/2}.
+  first_kick_and_drift(book);
+  forces_and_accelerations();
+  second_kick(book.h);
+  if (settings_.mode == Mode::Relax) fire(book);
+  director(book);
+  ledger(book);
+  world_.time += book.h;
+  ++world_.step;
+  check();
+  step_size_policy();
+}
+
+// Damping is for dynamic runs; a relaxation run is damped by FIRE alone.
+double Integrator::damping() const { return settings_.mode == Mode::Dynamic ? settings_.damping : 0.0; }
+
+// Velocity Verlet, first half: v_{n+1/2} = v_n + h/2 (a_n - c v_n), d_{n+1} = d_n + h v_{n+1/2};
+// the damping term is explicit in this half (its power, at v_{n+1/2}, goes to the
+// ledger) and implicit in the second. The supports move with the step.
+void Integrator::first_kick_and_drift(StepBook& book) {
+  const double h = book.h;
+  const double c = damping();
+  double damping_power = 0.0;
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
     const auto n = static_cast<Index>(b.size());
-#pragma omp parallel for schedule(static) reduction(+ : damping_power)
+    double body_power = 0.0;  // from zero, then added: see kinetic_energy (world.cpp)
+#pragma omp parallel for schedule(static) reduction(+ : body_power)
     for (Index i = 0; i < n; ++i) {
       b.v[i] += 0.5 * h * (b.a[i] - c * b.v[i]);
-      damping_power += c * b.mass[i] * b.v[i].squaredNorm();
+      body_power += c * b.mass[i] * b.v[i].squaredNorm();
       b.d[i] += h * b.v[i];
     }
+    damping_power += body_power;
     b.constraints.advance(h, b.d, b.v);
     update_positions(b);
   }
+  book.damping_power = damping_power;
+}
 
-  forces_and_accelerations();
-
-  // Second half kick, damping implicit in it: v_{n+1} = (v_{n+1/2} + h/2 a_{n+1}) / (1 + c h/2).
+// Velocity Verlet, second half, damping implicit in it (unconditionally stable for any
+// c): v_{n+1} = (v_{n+1/2} + h/2 a_{n+1}) / (1 + c h/2); the supports' velocities are
+// re-imposed.
+void Integrator::second_kick(double h) {
+  const double c = damping();
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
     const auto n = static_cast<Index>(b.size());
@@ -148,88 +171,65 @@ void Integrator::step() {
     for (Index i = 0; i < n; ++i) b.v[i] = factor * (b.v[i] + 0.5 * h * b.a[i]);
     b.constraints.impose(b.d, b.v);
   }
+}
 
-  if (settings_.mode == Mode::Relax) fire_update();
+// Relaxation: FIRE (Bitzek et al. 2006) mixes or stops the step-end velocities and sets
+// the next step, never above the stable step.
+void Integrator::fire(StepBook& book) {
+  const FireStep r = fire_.update(world_, dt_, settings_.dt_safety * stable_dt_);
+  dt_ = r.dt;
+  book.fire_dissipated = r.dissipated;
+}
 
+// The director of each LCE body moves at fixed positions (Eq. 5-8): the active power
+// at the step's end and the stored energy the update changes, booked apart.
+void Integrator::director(StepBook& book) {
   active_power_ = 0.0;
   for (auto& bp : world_.bodies)
     if (bp->director) {
-      const DirectorStep d = advance_director(*bp, h);
+      const DirectorStep d = advance_director(*bp, book.h);
       active_power_ += d.active_power;
-      // The director moves at fixed positions: the stored energy it changes is booked apart.
-      ledger_.director += d.energy_change;
+      book.director_energy.push_back(d.energy_change);
     }
-  term_power_ = power_of_terms();
-
-  ledger_.external += 0.5 * h * (old_term_power + term_power_) + h * support_power_;
-  ledger_.active += 0.5 * h * (old_active_power + active_power_);
-  ledger_.dissipated += h * damping_power;
-  world_.time += h;
-  ++world_.step;
-
-  check_state();
-  update_convergence();
-
-  // The stable step follows the state (stiffening, contact): re-estimate now and then.
-  if (world_.step % 10 == 0) {
-    stable_dt_ = estimate_stable_dt();
-    const double automatic = settings_.dt_safety * stable_dt_;
-    if (settings_.dt > 0.0 && !dt_clamped_) {
-      // A user step is kept while it stays below the stable estimate, as at the start;
-      // once clamped, the run follows the automatic step.
-      if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
-        dt_ = automatic;
-        dt_clamped_ = true;
-      }
-    } else if (settings_.mode == Mode::Dynamic || dt_clamped_) {
-      dt_ = automatic;
-    } else {
-      dt_ = std::min(dt_, automatic);  // FIRE grows dt by itself, up to this ceiling
-    }
-  }
 }
 
-void Integrator::fire_update() {
-  double power = 0.0, vv = 0.0, ff = 0.0;
-  for (const auto& bp : world_.bodies) {
-    const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
-#pragma omp parallel for schedule(static) reduction(+ : power, vv, ff)
-    for (Index i = 0; i < n; ++i) {
-      power += b.force[i].dot(b.v[i]);
-      vv += b.v[i].squaredNorm();
-      ff += b.force[i].squaredNorm();
+// The energy ledger: the work of the terms and of the moving supports and the active
+// work by the trapezoidal rule over the step, the director's energy change, and the
+// dissipation by FIRE and by damping.
+void Integrator::ledger(const StepBook& book) {
+  const double h = book.h;
+  term_power_ = power_of_terms();
+  if (settings_.mode == Mode::Relax) ledger_.dissipated += book.fire_dissipated;
+  for (double e : book.director_energy) ledger_.director += e;
+  ledger_.external += 0.5 * h * (book.old_term_power + term_power_) + h * support_power_;
+  ledger_.active += 0.5 * h * (book.old_active_power + active_power_);
+  ledger_.dissipated += h * book.damping_power;
+}
+
+// Blow-up (throws BlowUp with the diagnosis), then the relaxation measures.
+void Integrator::check() {
+  check_state();
+  update_convergence();
+}
+
+// The stable step follows the state (stiffening, contact): it is re-estimated every 10
+// steps. Three cases: a user step is kept while it stays below the estimate (as at the
+// start) and, once clamped, the run follows the automatic step; a dynamic run (or a
+// clamped one) takes the automatic step; FIRE grows its step by itself, up to the
+// automatic step as a ceiling.
+void Integrator::step_size_policy() {
+  if (world_.step % 10 != 0) return;
+  stable_dt_ = estimate_stable_dt();
+  const double automatic = settings_.dt_safety * stable_dt_;
+  if (settings_.dt > 0.0 && !dt_clamped_) {
+    if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
+      dt_ = automatic;
+      dt_clamped_ = true;
     }
-  }
-  const double dt_max = settings_.dt_safety * stable_dt_;
-  if (power > 0.0) {
-    // Steer the velocity toward the force direction, keeping its magnitude; the kinetic
-    // energy this removes (|mixed| <= |v|) goes to the ledger as dissipation.
-    const double kinetic_before = kinetic_energy();
-    const double mix = ff > 0.0 ? fire_alpha_ * std::sqrt(vv / ff) : 0.0;
-    for (auto& bp : world_.bodies) {
-      Body& b = *bp;
-      const auto n = static_cast<Index>(b.size());
-#pragma omp parallel for schedule(static)
-      for (Index i = 0; i < n; ++i) b.v[i] = (1.0 - fire_alpha_) * b.v[i] + mix * b.force[i];
-      b.constraints.impose(b.d, b.v);
-    }
-    ledger_.dissipated += kinetic_before - kinetic_energy();
-    if (++fire_positive_steps_ > kFireMinPositive) {
-      dt_ = std::min(dt_ * kFireIncrease, dt_max);
-      fire_alpha_ *= kFireAlphaShrink;
-    }
+  } else if (settings_.mode == Mode::Dynamic || dt_clamped_) {
+    dt_ = automatic;
   } else {
-    // Moving uphill: stop, and take the kinetic energy out of the ledger.
-    ledger_.dissipated += kinetic_energy();
-    for (auto& bp : world_.bodies) {
-      Body& b = *bp;
-      std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
-      b.constraints.impose(b.d, b.v);
-    }
-    fire_positive_steps_ = 0;
-    fire_alpha_ = kFireAlphaStart;
-    dt_ *= kFireDecrease;
+    dt_ = std::min(dt_, automatic);
   }
 }
 
@@ -245,7 +245,7 @@ void Integrator::update_convergence() {
       residual = std::max(residual, b.force[i].norm() / (mu * std::cbrt(b.cloud.volume[i] * b.cloud.volume[i])));
   }
   residual_ = residual;
-  kinetic_measure_ = kinetic_energy() / reference_energy;
+  kinetic_measure_ = kinetic_energy(world_) / reference_energy;
 }
 
 bool Integrator::converged() const {
@@ -288,43 +288,41 @@ void Integrator::check_state() {
   min_J_ = min_J;
 }
 
-std::vector<double> Integrator::save_state() const {
-  return {dt_,
-          stable_dt_,
-          ledger_.external,
-          ledger_.active,
-          ledger_.dissipated,
-          ledger_.initial,
-          ledger_.director,
-          term_power_,
-          active_power_,
-          support_power_,
-          fire_alpha_,
-          static_cast<double>(fire_positive_steps_),
-          settings_.domain_size,
-          centre_.x(),
-          centre_.y(),
-          centre_.z(),
-          dt_clamped_ ? 1.0 : 0.0};
+StateRecord Integrator::save_state() const {
+  StateRecord s;
+  s.put_real("dt", dt_);
+  s.put_real("stable_dt", stable_dt_);
+  s.put_integer("dt_clamped", dt_clamped_ ? 1 : 0);
+  s.put_real("ledger.external", ledger_.external);
+  s.put_real("ledger.active", ledger_.active);
+  s.put_real("ledger.dissipated", ledger_.dissipated);
+  s.put_real("ledger.initial", ledger_.initial);
+  s.put_real("ledger.director", ledger_.director);
+  s.put_real("term_power", term_power_);
+  s.put_real("active_power", active_power_);
+  s.put_real("support_power", support_power_);
+  s.put_real("fire.alpha", fire_.alpha());
+  s.put_integer("fire.positive_steps", fire_.positive_steps());
+  s.put_real("domain_size", settings_.domain_size);
+  s.put_vectors("centre", {centre_});
+  return s;
 }
 
-void Integrator::load_state(const std::vector<double>& s) {
-  if (s.size() != 17) throw std::invalid_argument("checkpoint: integrator state has the wrong size");
-  dt_ = s[0];
-  stable_dt_ = s[1];
-  ledger_.external = s[2];
-  ledger_.active = s[3];
-  ledger_.dissipated = s[4];
-  ledger_.initial = s[5];
-  ledger_.director = s[6];
-  term_power_ = s[7];
-  active_power_ = s[8];
-  support_power_ = s[9];
-  fire_alpha_ = s[10];
-  fire_positive_steps_ = static_cast<std::int64_t>(s[11]);
-  settings_.domain_size = s[12];
-  centre_ = Vec3(s[13], s[14], s[15]);
-  dt_clamped_ = s[16] != 0.0;
+void Integrator::load_state(const StateRecord& s) {
+  dt_ = s.real("dt");
+  stable_dt_ = s.real("stable_dt");
+  dt_clamped_ = s.integer("dt_clamped") != 0;
+  ledger_.external = s.real("ledger.external");
+  ledger_.active = s.real("ledger.active");
+  ledger_.dissipated = s.real("ledger.dissipated");
+  ledger_.initial = s.real("ledger.initial");
+  ledger_.director = s.real("ledger.director");
+  term_power_ = s.real("term_power");
+  active_power_ = s.real("active_power");
+  support_power_ = s.real("support_power");
+  fire_ = Fire(s.real("fire.alpha"), s.integer("fire.positive_steps"));
+  settings_.domain_size = s.real("domain_size");
+  centre_ = s.vectors("centre", 1).front();
 }
 
 }  // namespace rkpm::sim

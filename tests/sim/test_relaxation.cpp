@@ -19,6 +19,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -210,6 +211,96 @@ TEST(Relaxation, FireNeedsFewerStepsThanTheBestViscousDamping) {
     if (viscous.converged) best = std::min(best, viscous.steps);
   }
   EXPECT_LT(fire.steps, best);
+}
+
+// The relaxation criterion's modulus on a graded body. The residual is
+// max_I |f_I| / (mu_mean V_I^(2/3)) with mu_mean the volume-weighted mean shear
+// modulus, sum_I V_I mu_I / sum_I V_I: a property of the body, not of whichever
+// particle comes first. A Mooney-Rivlin block graded 0.5x..4.5x along x and the same
+// block graded 4.5x..0.5x are mirror images: the same mean modulus, mirrored forces,
+// the same residual; the first particle's modulus (the old scale) differs by 9.
+const std::string kGradedBlock = R"([scene]
+name = "graded"
+[integrator]
+mode = "relax"
+t_end = 1e6
+[[body]]
+name = "block"
+density = 1000
+[body.cloud]
+generator = "block"
+size = [1, 0.6, 0.6]
+cells = [6, 3, 3]
+[body.material]
+model = "mooney_rivlin"
+c1 = 400
+c2 = 100
+lambda = 2000
+grade_axis = "x"
+grade_a = {a}
+grade_b = {b}
+[body.initial]
+stretch = [1.05, 0.98, 1.0]
+)";
+
+struct GradedResidual {
+  double residual = 0.0;       // the integrator's
+  double independent = 0.0;    // max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean written out here
+  double mu_mean = 0.0;        // written out here
+  double mu_first = 0.0;       // the modulus of particle 0
+  double old_residual = 0.0;   // max_I |f_I| / (mu_first V_I^(2/3))
+};
+
+GradedResidual graded_residual(double a, double b) {
+  auto sw = testing::build_from_text(
+      testing::with(testing::with(kGradedBlock, "a", std::to_string(a)), "b", std::to_string(b)));
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  const Body& body = *sw.world->bodies.front();
+  // The small-strain shear modulus of the modified Mooney-Rivlin solid, 2 (c1 + c2),
+  // times the grading factor a s + b, s = (X - X_min) / (X_max - X_min) (Eq. 18).
+  double x_min = INFINITY, x_max = -INFINITY;
+  for (const auto& X : body.cloud.X) {
+    x_min = std::min(x_min, X.x());
+    x_max = std::max(x_max, X.x());
+  }
+  auto mu_at = [&](std::size_t i) { return 2.0 * (kC1 + kC2) * (a * (body.cloud.X[i].x() - x_min) / (x_max - x_min) + b); };
+  double weighted = 0.0, volume = 0.0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    EXPECT_NEAR(shear_modulus(body, static_cast<Index>(i)), mu_at(i), 1e-12 * mu_at(i)) << i;
+    weighted += body.cloud.volume[i] * mu_at(i);
+    volume += body.cloud.volume[i];
+  }
+  GradedResidual r;
+  r.residual = integrator.residual();
+  r.mu_mean = weighted / volume;
+  r.mu_first = mu_at(0);
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const double f = body.force[i].norm() / std::pow(body.cloud.volume[i], 2.0 / 3.0);
+    r.independent = std::max(r.independent, f / r.mu_mean);
+    r.old_residual = std::max(r.old_residual, f / r.mu_first);
+  }
+  return r;
+}
+
+TEST(Relaxation, ResidualOfAGradedBodyIsScaledByItsMeanShearModulus) {
+  testing::ScopedThreads one(1);
+  const GradedResidual soft_first = graded_residual(4.0, 0.5), stiff_first = graded_residual(-4.0, 4.5);
+  for (const auto* r : {&soft_first, &stiff_first})
+    std::printf("mu_mean %.6g Pa, first particle's mu %.6g Pa; residual %.10e (formula %.10e; with the first "
+                "particle's mu %.10e)\n",
+                r->mu_mean, r->mu_first, r->residual, r->independent, r->old_residual);
+  ASSERT_GT(soft_first.residual, 0.0);
+  EXPECT_NEAR(soft_first.residual, soft_first.independent, 1e-12 * soft_first.independent);
+  EXPECT_NEAR(stiff_first.residual, stiff_first.independent, 1e-12 * stiff_first.independent);
+  // Reversing the grading leaves the mean modulus (2.5 x 2 (c1 + c2)) and so the
+  // residual unchanged...
+  EXPECT_NEAR(soft_first.mu_mean, 2.5 * 2.0 * (kC1 + kC2), 1e-9 * soft_first.mu_mean);
+  EXPECT_NEAR(stiff_first.mu_mean, soft_first.mu_mean, 1e-12 * soft_first.mu_mean);
+  EXPECT_NEAR(stiff_first.residual, soft_first.residual, 1e-9 * soft_first.residual);
+  // ...where the first particle's modulus changes from soft to stiff by the factor 9.
+  EXPECT_NEAR(stiff_first.mu_first / soft_first.mu_first, 9.0, 1e-12);
+  EXPECT_NEAR(soft_first.old_residual / stiff_first.old_residual, 9.0, 1e-6);
 }
 
 }  // namespace

@@ -1,14 +1,17 @@
 // Explicit time integration of a World: velocity Verlet (central difference) with
 // lumped masses, optional mass-proportional damping, and a FIRE relaxation mode
 // for equilibrium problems. Keeps the energy ledger and checks every step for
-// blow-up.
+// blow-up. A step is a short list of named stages (see step()).
 #pragma once
 
+#include "rkpm/sim/fire.hpp"
+#include "rkpm/sim/state_record.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace rkpm::sim {
 
@@ -19,8 +22,8 @@ struct IntegratorSettings {
   double dt = 0.0;               // 0: automatic; otherwise the requested step [s]
   double dt_safety = 0.5;        // fraction of the estimated stable step
   double damping = 0.0;          // mass-proportional damping coefficient [1/s]
-  double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_body V_I^(2/3))
-  double relax_velocity_tol = 1e-8;  // kinetic energy / (mu_body V_body)
+  double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
+  double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
 };
@@ -72,17 +75,35 @@ class Integrator {
   bool dt_clamped() const { return dt_clamped_; }
   double min_J() const { return min_J_; }
 
-  // Checkpointing: the integrator's own state.
-  std::vector<double> save_state() const;
-  void load_state(const std::vector<double>& state);
+  // Checkpointing: the integrator's own state as named fields (load_state throws
+  // StateError naming a missing or mis-sized field).
+  StateRecord save_state() const;
+  void load_state(const StateRecord& state);
 
  private:
-  double estimate_stable_dt() const;
+  // What the stages of one step hand to the ledger.
+  struct StepBook {
+    double h = 0.0;                             // the step taken [s]
+    double old_term_power = 0.0, old_active_power = 0.0;  // at the start of the step [W]
+    double damping_power = 0.0;                 // c sum_I m_I |v_I|^2 at the half step [W]
+    double fire_dissipated = 0.0;               // kinetic energy removed by FIRE [J]
+    std::vector<double> director_energy;        // per LCE body, in body order [J]
+  };
+
+  // The stages of step(), in order.
+  void first_kick_and_drift(StepBook& book);
   void forces_and_accelerations();
-  double kinetic_energy() const;
+  void second_kick(double h);
+  void fire(StepBook& book);
+  void director(StepBook& book);
+  void ledger(const StepBook& book);
+  void check();  // throws BlowUp
+  void step_size_policy();
+
+  double estimate_stable_dt() const;
+  double damping() const;
   double stored_energy();
   double power_of_terms() const;
-  void fire_update();
   void check_state();  // throws BlowUp
   void update_convergence();
 
@@ -95,9 +116,8 @@ class Integrator {
   double residual_ = 0.0, kinetic_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
   Vec3 centre_ = Vec3::Zero();
-  // FIRE (Bitzek et al., PRL 97, 170201, 2006)
-  double fire_alpha_ = 0.1;
-  std::int64_t fire_positive_steps_ = 0;
+  Fire fire_;  // relaxation mode only
+  StepBook book_;
 };
 
 }  // namespace rkpm::sim

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "rkpm/sim/body.hpp"
+#include "rkpm/sim/state_record.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -38,9 +39,10 @@ class Term {
   // state as text, each preceded by a comma (",0.98,12.5"). None by default.
   virtual std::vector<std::string> history_columns() const { return {}; }
   virtual std::string history_values(const World&) const { return {}; }
-  // Checkpoint state beyond the bodies (empty for stateless terms).
-  virtual std::vector<double> save_state() const { return {}; }
-  virtual void load_state(const std::vector<double>&) {}
+  // Checkpoint state beyond the bodies, as named fields (none for stateless terms);
+  // load_state reads them back by name (StateRecord throws on a missing or mis-sized one).
+  virtual void save_state(StateRecord&) const {}
+  virtual void load_state(const StateRecord&) {}
 };
 
 struct World {
@@ -66,5 +68,8 @@ struct World {
 
 // Internal forces of every body, then every term's forces.
 void compute_forces(World& world);
+
+// Kinetic energy sum_I m_I |v_I|^2 / 2 of every body [J].
+double kinetic_energy(const World& world);
 
 }  // namespace rkpm::sim
