@@ -11,8 +11,8 @@ namespace rkpm::scene::tables {
 std::vector<ParamTable> run_sections();     // [scene], [integrator], [output]
 ParamTable body();                          // [[body]]
 std::vector<ParamTable> body_details();     // [body.director], [body.rk], [body.initial], [[body.boundary]]
+// The variants of [body.material] come from the material catalog (src/materials/catalog.hpp).
 std::vector<ParamTable> cloud_generators(); // variants of [body.cloud], selected by `generator`
-std::vector<ParamTable> materials();        // variants of [body.material], selected by `model`
 std::vector<ParamTable> terms();            // variants of [[term]], selected by `type` (term_list.cpp)
 
 }  // namespace rkpm::scene::tables
