@@ -10,7 +10,7 @@
 //                   once in the transposed gather for the force;
 //   interp_updates  the same for the nodal-interpolation operator Psi_I(X_L) in the
 //                   stabilization force (also read twice).
-#include "rkpm/materials/mooney_rivlin.hpp"
+#include "materials/mooney_rivlin/mooney_rivlin.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
 #include "rkpm/rk/rk_approximation.hpp"

@@ -28,8 +28,7 @@ std::size_t interpolation_bytes(const rk::NodalInterpolation& n) {
 }
 
 std::size_t material_bytes(const sim::Material& material) {
-  if (const auto* mr = std::get_if<sim::MooneyRivlinMaterial>(&material)) return bytes(mr->at_point);
-  return bytes(std::get<sim::LCEMaterial>(material).activity);
+  return std::visit([](const auto& m) { return m.state_bytes(); }, material);
 }
 
 template <class Measure>

@@ -1,5 +1,6 @@
 #include "rkpm/scene/param_registry.hpp"
 
+#include "materials/catalog.hpp"
 #include "tables/tables.hpp"
 #include "terms/catalog.hpp"
 
@@ -36,9 +37,9 @@ ParamRegistry::ParamRegistry() {
                                      "The body's particle cloud: a generator or an imported mesh."));
   append(tables_, std::move(generators));
 
-  auto materials = tables::materials();
-  tables_.push_back(selector_section("body.material", "model", materials, "The body's constitutive model."));
-  append(tables_, std::move(materials));
+  auto models = materials::material_tables();
+  tables_.push_back(selector_section("body.material", "model", models, "The body's constitutive model."));
+  append(tables_, std::move(models));
 
   append(tables_, tables::body_details());
 

@@ -27,6 +27,22 @@ bool contains(const std::vector<std::string>& list, std::string_view word) {
   return std::find(list.begin(), list.end(), word) != list.end();
 }
 
+// Whether the [body.material] model `model` takes the section `section` alongside
+// (ParamTable::companion_sections), and the models that do, for messages.
+bool takes_section(const std::string& model, const std::string& section) {
+  const ParamTable* table = ParamRegistry::instance().variant("body.material", model);
+  return table && contains(table->companion_sections, section);
+}
+
+std::string models_taking(const std::string& section) {
+  std::string names;
+  for (const auto& model : ParamRegistry::instance().variant_names("body.material")) {
+    if (!takes_section(model, section)) continue;
+    names += fmt::format("{}model = \"{}\"", names.empty() ? "" : " or ", model);
+  }
+  return names.empty() ? "no model" : names;
+}
+
 class Loader {
  public:
   Loader(const toml::table& root, std::string file) : root_(root), file_(std::move(file)) {}
@@ -117,14 +133,15 @@ class Loader {
     spec.rk = plain_sub_table(body_table, "rk");
     spec.initial = plain_sub_table(body_table, "initial");
 
-    // A director exists exactly for LCE bodies (seed Eq. 1-8); other models have none.
-    const bool lce = spec.model() == "lce";
-    if (body_table.get("director") && !lce) {
+    // A director exists exactly for the models whose table says so (the LCE, seed
+    // Eq. 1-8); other models have none.
+    const bool director = takes_section(spec.model(), "body.director");
+    if (body_table.get("director") && !director) {
       throw section_error(line_of(*body_table.get("director")), "body.director",
-                          fmt::format("no director table for model = \"{}\" (only model = \"lce\" has a director)",
-                                      spec.model()));
+                          fmt::format("no director table for model = \"{}\" (only {} has a director)", spec.model(),
+                                      models_taking("body.director")));
     }
-    if (lce) spec.director = plain_sub_table(body_table, "director");
+    if (director) spec.director = plain_sub_table(body_table, "director");
 
     if (const toml::node* node = body_table.get("boundary")) {
       if (!node->is_array_of_tables()) {

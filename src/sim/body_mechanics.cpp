@@ -9,20 +9,9 @@
 namespace rkpm::sim {
 
 namespace {
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
-
-materials::DirectorPoint director_at(const DirectorField& dir, std::size_t L) {
-  materials::DirectorPoint p;
-  p.h = dir.h[L];
-  p.h0 = dir.h0[L];
-  p.grad_h = dir.frank ? dir.grad_h[L] : Mat3::Zero();
-  return p;
-}
+// The body's director field, or null for a material without one.
+DirectorField* director_of(Body& body) { return body.director ? &*body.director : nullptr; }
+const DirectorField* director_of(const Body& body) { return body.director ? &*body.director : nullptr; }
 }  // namespace
 
 void update_positions(Body& body) {
@@ -104,42 +93,30 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
 }
 }  // namespace
 
+// Each function below dispatches once per body (std::visit over the material catalog)
+// and calls the model's inline kernel per point (sim::Material's interface).
 void compute_internal_forces(Body& body) {
-  std::visit(Overloaded{
-                 [&](const MooneyRivlinMaterial& m) {
-                   force_pass(body, nullptr, [&](Index L, const Mat3& F, const Mat3&, Mat3&) {
-                     return m.at_point[L].first_piola(F);
-                   });
-                 },
-                 [&](const LCEMaterial& m) {
-                   DirectorField& dir = *body.director;
-                   force_pass(body, &dir, [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
-                     materials::DirectorPoint p;
-                     p.h = dir.h[L];
-                     p.h0 = dir.h0[L];
-                     p.grad_h = grad_h;
-                     const double activity = m.activity.empty() ? 1.0 : m.activity[L];
-                     return m.model.first_piola(F, p, activity, dir.frank ? &flux : nullptr);
-                   });
-                 }},
-             body.material);
+  DirectorField* dir = director_of(body);
+  const bool frank = dir != nullptr && dir->frank;
+  std::visit(
+      [&](const auto& material) {
+        force_pass(body, dir, [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
+          return material.first_piola(L, F, grad_h, frank ? &flux : nullptr, dir);
+        });
+      },
+      body.material);
 }
 
 double strain_energy(const Body& body) {
   const auto n = static_cast<Index>(body.F.size());
+  const DirectorField* dir = director_of(body);
   double total = 0.0;
-  std::visit(Overloaded{
-                 [&](const MooneyRivlinMaterial& m) {
+  std::visit(
+      [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(+ : total)
-                   for (Index L = 0; L < n; ++L) total += body.gradient.weight[L] * m.at_point[L].energy(body.F[L]);
-                 },
-                 [&](const LCEMaterial& m) {
-#pragma omp parallel for schedule(static) reduction(+ : total)
-                   for (Index L = 0; L < n; ++L)
-                     total += body.gradient.weight[L] *
-                              m.model.energy(body.F[L], director_at(*body.director, static_cast<std::size_t>(L)));
-                 }},
-             body.material);
+        for (Index L = 0; L < n; ++L) total += body.gradient.weight[L] * material.energy(L, body.F[L], dir);
+      },
+      body.material);
   return total + body.stabilization_energy;
 }
 
@@ -169,8 +146,7 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals) {
 }
 
 double shear_modulus(const Body& body, Index L) {
-  if (const auto* lce = std::get_if<LCEMaterial>(&body.material)) return lce->model.mu;
-  return std::get<MooneyRivlinMaterial>(body.material).at_point[static_cast<std::size_t>(L)].shear_modulus();
+  return std::visit([L](const auto& material) { return material.shear_modulus(L); }, body.material);
 }
 
 double mean_shear_modulus(const Body& body) {
@@ -184,22 +160,15 @@ double mean_shear_modulus(const Body& body) {
 
 double material_stable_dt(const Body& body) {
   const auto n = static_cast<Index>(body.F.size());
+  const DirectorField* dir = director_of(body);
   double dt = std::numeric_limits<double>::infinity();
-  std::visit(Overloaded{
-                 [&](const MooneyRivlinMaterial& m) {
+  std::visit(
+      [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(min : dt)
-                   for (Index L = 0; L < n; ++L)
-                     dt = std::min(dt, body.spacing[L] / m.at_point[L].wave_speed(body.F[L], body.density));
-                 },
-                 [&](const LCEMaterial& m) {
-#pragma omp parallel for schedule(static) reduction(min : dt)
-                   for (Index L = 0; L < n; ++L)
-                     dt = std::min(dt, body.spacing[L] / m.model.wave_speed(
-                                                             body.F[L],
-                                                             director_at(*body.director, static_cast<std::size_t>(L)),
-                                                             body.density));
-                 }},
-             body.material);
+        for (Index L = 0; L < n; ++L)
+          dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density));
+      },
+      body.material);
   return dt;
 }
 

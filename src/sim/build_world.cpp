@@ -1,8 +1,6 @@
 #include "rkpm/sim/build.hpp"
 
-#include "rkpm/sim/activity_field.hpp"
-
-#include "rkpm/materials/graded_parameters.hpp"
+#include "materials/catalog.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/scene/cloud_recipe.hpp"
@@ -37,49 +35,6 @@ Vec3 centroid(const particles::Cloud& c) {
   return sum / v;
 }
 
-Material make_material(const scene::BodySpec& spec, const particles::Cloud& cloud) {
-  const auto& m = spec.material;
-  if (spec.model() == "lce") {
-    LCEMaterial lce;
-    lce.model.mu = m.real("mu");
-    lce.model.K = m.real("bulk");
-    lce.model.s = m.real("s");
-    lce.model.kappa = m.real("kappa");
-    lce.model.mobility = m.real("mobility");
-    lce.model.zeta = m.real("zeta");
-    lce.model.validate();
-    return lce;
-  }
-  materials::MooneyRivlin base;
-  base.c1 = m.real("c1");
-  base.c2 = m.real("c2");
-  base.lambda = m.real("lambda");
-  base.validate();
-  MooneyRivlinMaterial mr;
-  const std::string axis_name = m.choice("grade_axis");
-  if (axis_name == "none") {
-    mr.at_point.assign(cloud.size(), base);
-    return mr;
-  }
-  // Eq. 18: value = base * (a (X_axis - X_min) / L0 + b), L0 = the body's extent by default.
-  materials::GradedMooneyRivlin graded;
-  graded.base = base;
-  graded.grading.axis = axis_name == "x" ? 0 : axis_name == "y" ? 1 : 2;
-  double lo = INFINITY, hi = -INFINITY;
-  for (const auto& X : cloud.X) {
-    lo = std::min(lo, X[graded.grading.axis]);
-    hi = std::max(hi, X[graded.grading.axis]);
-  }
-  graded.grading.x_min = lo;
-  graded.grading.length = m.real("grade_length") > 0.0 ? m.real("grade_length") : hi - lo;
-  graded.grading.slope = m.real("grade_a");
-  graded.grading.offset = m.real("grade_b");
-  graded.validate();
-  mr.at_point.reserve(cloud.size());
-  for (const auto& X : cloud.X) mr.at_point.push_back(graded.at(X));
-  return mr;
-}
-
 // Initial director (Eq. 8 and the text around it): the outward normal of the nearest
 // surface particle, oriented away from the body's centre so that a shell's wall carries
 // the outer normal through its thickness; or radial; or a fixed vector.
@@ -89,7 +44,6 @@ Material make_material(const scene::BodySpec& spec, const particles::Cloud& clou
 DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::string& warning) {
   const auto& p = *spec.director;
   const auto& cloud = body.cloud;
-  const auto& model = std::get<LCEMaterial>(body.material).model;
   DirectorField dir;
   const std::size_t n = cloud.size();
   dir.h.resize(n);
@@ -144,14 +98,9 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
   dir.h0 = dir.h;
   dir.evolve = p.flag("evolve");
   dir.anchored = p.choice("boundary") == "normal";
-  dir.frank = model.kappa > 0.0;
   dir.rate.assign(n, Vec3::Zero());
   dir.F_rate.assign(n, Mat3::Identity());
-  if (dir.frank) {
-    dir.grad_h.assign(n, Mat3::Zero());
-    dir.frank_flux.assign(n, Mat3::Zero());
-    dir.frank_divergence.assign(n, Vec3::Zero());
-  }
+  // The material decides whether the Frank term's arrays are needed (materials/lce).
   return dir;
 }
 
@@ -233,14 +182,6 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) body->mass[i] = body->density * cloud.volume[i];
 
-  try {
-    body->material = make_material(spec, cloud);
-  } catch (const std::invalid_argument& e) {
-    throw SetupError(fmt::format("{} body '{}': {}", where(spec.material), body->name, e.what()));
-  }
-  body->stabilization =
-      rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
-
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");
   const Vec3 centre = centroid(cloud);
@@ -261,9 +202,11 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->P.assign(n, Mat3::Zero());
   update_positions(*body);
 
+  // The director field first: a model that carries one (the LCE) builds on it.
   if (spec.director) body->director = make_director(spec, *body, warning);
-  if (auto* lce = std::get_if<LCEMaterial>(&body->material))
-    lce->activity = activity_field(spec, *body, lce->model.zeta);
+  materials::make_material(spec, *body);
+  body->stabilization =
+      rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
   try {
     body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
   } catch (const std::runtime_error& e) {

@@ -1,10 +1,12 @@
 // Director evolution of liquid-crystal-elastomer bodies (seed Eq. 5-8).
 #include "rkpm/sim/body.hpp"
 
+#include "materials/lce/director_point.hpp"
+
 namespace rkpm::sim {
 
 namespace {
-double activity_factor(const LCEMaterial& m, Index L) { return m.activity.empty() ? 1.0 : m.activity[L]; }
+using materials::lce::director_point;
 
 // Passive energy sum_L V_L W(F_L, h_L) at the current F and Grad h (the latter as last
 // computed by the force loop).
@@ -13,19 +15,14 @@ double director_energy(const Body& body, const materials::LiquidCrystalElastomer
   const auto n = static_cast<Index>(body.size());
   double total = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : total)
-  for (Index L = 0; L < n; ++L) {
-    materials::DirectorPoint p;
-    p.h = dir.h[L];
-    p.h0 = dir.h0[L];
-    p.grad_h = dir.frank ? dir.grad_h[L] : Mat3::Zero();
-    total += body.gradient.weight[L] * model.energy(body.F[L], p);
-  }
+  for (Index L = 0; L < n; ++L) total += body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L));
   return total;
 }
 }  // namespace
 
 DirectorStep advance_director(Body& body, double dt) {
-  const auto& material = std::get<LCEMaterial>(body.material);
+  // Only the LCE carries a director (its BodyMaterial::needs_director).
+  const auto& material = std::get<materials::lce::BodyMaterial>(body.material);
   const auto& model = material.model;
   DirectorField& dir = *body.director;
   const auto n = static_cast<Index>(body.size());
@@ -41,17 +38,14 @@ DirectorStep advance_director(Body& body, double dt) {
     for (Index L = 0; L < n; ++L)
       // The active stress is part of the internal force -sum_L V_L P_L b_I, so it puts
       // energy in at the rate -sum_L V_L P_a : dF/dt.
-      active -= body.gradient.weight[L] * activity_factor(material, L) *
+      active -= body.gradient.weight[L] * material.activity_at(L) *
                 (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
   }
 
   if (dir.evolve) {
 #pragma omp parallel for schedule(static)
     for (Index I = 0; I < n; ++I) {
-      materials::DirectorPoint p;
-      p.h = dir.h[I];
-      p.h0 = dir.h0[I];
-      p.grad_h = dir.frank ? dir.grad_h[I] : Mat3::Zero();
+      const materials::DirectorPoint p = director_point(dir, I);
       const Mat3 l = dir.F_rate[I] * body.F[I].inverse();
       const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
       dir.rate[I] = model.director_rate(body.F[I], p, l, frank);

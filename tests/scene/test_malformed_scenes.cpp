@@ -103,6 +103,17 @@ std::vector<Malformed> malformed_scenes() {
       {"director on a Mooney-Rivlin body", kBase + "[body.director]\ninitial = \"radial\"\n",
        "bad.toml:15: [body.director]: expected no director table for model = \"mooney_rivlin\" "
        "(only model = \"lce\" has a director)"},
+      {"neo-Hookean without lambda",
+       replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000\nlambda = 1e5\n", "model = \"neo_hookean\"\nmu = 1000\n"),
+       "bad.toml:11: [body.material] lambda: expected a value for this required key: a real > 0 [Pa]"},
+      {"neo-Hookean with zero shear modulus",
+       replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000", "model = \"neo_hookean\"\nmu = 0"),
+       "bad.toml:13: [body.material] mu = 0: expected a real > 0 [Pa]"},
+      {"director on a neo-Hookean body",
+       replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000", "model = \"neo_hookean\"\nmu = 1000") +
+           "[body.director]\ninitial = \"radial\"\n",
+       "bad.toml:15: [body.director]: expected no director table for model = \"neo_hookean\" "
+       "(only model = \"lce\" has a director)"},
       {"fixed director of zero length",
        kBase + kLceBody + "[body.director]\ninitial = \"fixed\"\nvector = [0, 0, 0]\n",
        "bad.toml:26: [body.director] vector = [0, 0, 0]: expected a non-zero vector"},

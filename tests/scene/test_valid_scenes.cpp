@@ -88,6 +88,18 @@ TEST(ValidScene, LceBodyGetsDefaultDirector) {
   EXPECT_EQ(s.find_body("nobody"), nullptr);
 }
 
+TEST(ValidScene, NeoHookeanBodyTakesLameConstants) {
+  const std::string text = replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000\nlambda = 1e5",
+                                    "model = \"neo_hookean\"\nmu = 2000\nlambda = 8e3");
+  const Scene s = parse_scene(text, "ok.toml");
+  ASSERT_EQ(s.bodies.size(), 1u);
+  const BodySpec& b = s.bodies[0];
+  EXPECT_EQ(b.model(), "neo_hookean");
+  EXPECT_EQ(b.material.real("mu"), 2000.0);
+  EXPECT_EQ(b.material.real("lambda"), 8e3);
+  EXPECT_FALSE(b.director.has_value());  // no director: the neo-Hookean table takes none
+}
+
 TEST(ValidScene, TermsKeepFileOrderAndDerivedDefaults) {
   const std::string text = kBase + kLceBody + R"([[term]]
 type = "contact"

@@ -44,7 +44,7 @@ boundary = "normal"
 
 // zeta_L of every particle: the reference amplitude times the relative field.
 std::vector<double> zeta_field(const rkpm::sim::Body& body) {
-  const auto& lce = std::get<rkpm::sim::LCEMaterial>(body.material);
+  const auto& lce = std::get<rkpm::materials::lce::BodyMaterial>(body.material);
   std::vector<double> zeta(body.size(), lce.model.zeta);
   for (std::size_t i = 0; i < lce.activity.size(); ++i) zeta[i] = lce.model.zeta * lce.activity[i];
   return zeta;

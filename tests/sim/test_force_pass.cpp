@@ -72,18 +72,15 @@ Reference unfused(Body& b) {
   Reference r;
   std::vector<Mat3> F, grad_h, P(b.size()), flux(b.size());
   rk::deformation_gradients(b.gradient, b.x, F);
-  const auto* lce = std::get_if<LCEMaterial>(&b.material);
+  const auto* lce = std::get_if<materials::lce::BodyMaterial>(&b.material);
   if (lce) rk::deformation_gradients(b.gradient, b.director->h, grad_h);
   for (std::size_t L = 0; L < b.size(); ++L) {
     if (lce) {
-      materials::DirectorPoint p;
-      p.h = b.director->h[L];
-      p.h0 = b.director->h0[L];
-      p.grad_h = grad_h[L];
+      const auto p = materials::lce::director_point(*b.director, static_cast<Index>(L), grad_h[L]);
       P[L] = lce->model.first_piola(F[L], p);
       flux[L] = lce->model.frank_flux(F[L], p);
     } else {
-      P[L] = std::get<MooneyRivlinMaterial>(b.material).at_point[L].first_piola(F[L]);
+      P[L] = std::get<materials::mooney_rivlin::BodyMaterial>(b.material).at_point[L].first_piola(F[L]);
     }
   }
   rk::internal_forces(b.gradient, P, r.force);

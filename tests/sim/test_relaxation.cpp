@@ -46,11 +46,22 @@ generator = "block"
 size = [1, 0.6, 0.6]
 cells = [5, 3, 3]
 jitter = 0.1
-[body.material]
+)";
+
+const std::string kMooneyRivlin = R"([body.material]
 model = "mooney_rivlin"
 c1 = 400
 c2 = 100
 lambda = 2000
+)";
+
+// The same small-strain shear modulus, through the neo-Hookean path of the material
+// catalog (its table, body material and kernel).
+constexpr double kMu = 1000.0, kLame = 4000.0;  // Pa: mu, lambda
+const std::string kNeoHookean = R"([body.material]
+model = "neo_hookean"
+mu = 1000
+lambda = 4000
 )";
 
 const std::string kRollersAndPressureEverywhere = R"([[body.boundary]]
@@ -139,9 +150,10 @@ void remove_rigid_motion(const std::vector<Vec3>& X, std::vector<Vec3>& e) {
 // compares the physical displacement with u = (diag(l, t, t) - I) X, up to a rigid
 // motion when `free_rigid_motion`.
 Relaxed relax(const std::string& loading, const std::string& mode, double damping, const Eigen::Vector2d& lt,
-              bool free_rigid_motion, std::int64_t max_steps = 200000) {
+              bool free_rigid_motion, std::int64_t max_steps = 200000, const std::string& material = kMooneyRivlin) {
   auto sw = testing::build_from_text(
-      testing::with(testing::with(kLoadedBlock, "mode", mode), "damping", std::to_string(damping)) + loading);
+      testing::with(testing::with(kLoadedBlock, "mode", mode), "damping", std::to_string(damping)) + material +
+      loading);
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
   Relaxed r;
@@ -193,6 +205,40 @@ TEST(Relaxation, FireReachesTheUniaxialEquilibriumOfABlockPulledAtBothEnds) {
   EXPECT_LE(r.displacement_error, 1e-3)
       << "a pressure on one face of a block must not act on the neighbouring faces: check that boundary-quadrature "
          "facets are tagged with the surfaces of the face they lie on, not with every surface of their owner particle";
+}
+
+// Uniaxial tension T of the neo-Hookean block: F = diag(l, t, t) with P_22 = 0, i.e.
+// mu (t^2 - 1) + lambda ln J = 0, and sigma_11 = mu (l^2 - t^2) / J = T (sigma_22 = 0),
+// written out here from W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2.
+Eigen::Vector2d neo_hookean_uniaxial_stretches(double tension) {
+  const auto residual = [&](const Eigen::Vector2d& s) {
+    const double J = s[0] * s[1] * s[1];
+    return Eigen::Vector2d(kMu * (s[0] * s[0] - s[1] * s[1]) / J - tension,
+                           kMu * (s[1] * s[1] - 1.0) + kLame * std::log(J));
+  };
+  Eigen::Vector2d s(1.0, 1.0);
+  for (int it = 0; it < 50 && residual(s).norm() > 1e-12 * tension; ++it) {
+    Eigen::Matrix2d jac;
+    for (int k = 0; k < 2; ++k) {
+      Eigen::Vector2d sp = s;
+      sp[k] += 1e-7;
+      jac.col(k) = (residual(sp) - residual(s)) / 1e-7;
+    }
+    s -= jac.lu().solve(residual(s));
+  }
+  return s;
+}
+
+TEST(Relaxation, FireReachesTheUniaxialEquilibriumOfANeoHookeanBlock) {
+  testing::ScopedThreads one(1);
+  const Eigen::Vector2d lt = neo_hookean_uniaxial_stretches(kTension);
+  const Relaxed r = relax(kPulledAtBothEnds, "relax", 0.0, lt, true, 200000, kNeoHookean);
+  std::printf("neo-Hookean uniaxial tension %.0f Pa: stretch %.6f, lateral %.6f; FIRE %lld steps, residual %.2e, "
+              "max relative displacement error %.3e\n",
+              kTension, lt[0], lt[1], static_cast<long long>(r.steps), r.residual, r.displacement_error);
+  EXPECT_GT(lt[0], 1.05);  // about 10 % strain: beyond linear elasticity
+  ASSERT_TRUE(r.converged);
+  EXPECT_LE(r.displacement_error, 1e-3);
 }
 
 // FIRE against plain mass-proportional damping on the same problem and criterion. The

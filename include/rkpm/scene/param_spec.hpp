@@ -119,6 +119,9 @@ struct ParamTable {
   // Cloud generators: the named surfaces the cloud provides (for boundary
   // conditions and surface terms).
   std::vector<std::string> surfaces;
+  // Variants: the sections that exist only alongside this variant, e.g. "body.director"
+  // for a material model with a director field; any other variant rejects them.
+  std::vector<std::string> companion_sections;
   // Consistency checks between keys of this table and derived defaults; throws
   // SceneError through ParamSet::error. May be empty.
   std::function<void(ParamSet&)> finish;

@@ -9,13 +9,15 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/materials/liquid_crystal_elastomer.hpp"
-#include "rkpm/materials/mooney_rivlin.hpp"
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
 #include "rkpm/rk/row_scatter.hpp"
 #include "rkpm/rk/stabilization.hpp"
+#include "rkpm/sim/director_field.hpp"
 #include "rkpm/sim/essential_bc.hpp"
+
+// Generated from src/materials/catalog.def: each model's body_material.hpp.
+#include "materials/body_materials.hpp"
 
 #include <memory>
 #include <optional>
@@ -25,34 +27,32 @@
 
 namespace rkpm::sim {
 
-// Mooney-Rivlin parameters per integration point (uniform or graded, Eq. 18).
-struct MooneyRivlinMaterial {
-  std::vector<materials::MooneyRivlin> at_point;
+namespace detail {
+// std::variant of the types after the leading void: lets an X-macro list write
+// ", Type" for every entry.
+template <class Void, class... Models>
+struct VariantAfterVoid {
+  using type = std::variant<Models...>;
 };
+}  // namespace detail
 
-// Active liquid-crystal elastomer (Eq. 1-4); its director lives in Body::director.
-struct LCEMaterial {
-  materials::LiquidCrystalElastomer model;
-  // Activity of each point relative to model.zeta (the activity field); empty = uniform.
-  std::vector<double> activity;
-};
-
-using Material = std::variant<MooneyRivlinMaterial, LCEMaterial>;
-
-// The director field of an LCE body (Eq. 5-8): present only in such bodies.
-struct DirectorField {
-  std::vector<Vec3> h;                 // current director per particle (unit)
-  std::vector<Vec3> h0;                // reference director per particle (unit)
-  std::vector<Mat3> grad_h;            // Grad_X h per integration point (Frank term only)
-  std::vector<Mat3> frank_flux;        // dW/d(Grad_X h) per point (Frank term only)
-  std::vector<Vec3> frank_divergence;  // Div_X of the flux at particles (Frank term only)
-  std::vector<Vec3> rate;              // dh/dt
-  std::vector<Mat3> F_rate;            // dF/dt per point (velocity gradient l = dF/dt F^-1)
-  std::vector<Vec3> normals;           // scratch: current outward normals of the surface
-  bool evolve = true;                  // integrate Eq. 5-7
-  bool anchored = true;                // Eq. 8: h = current outward normal on the surface
-  bool frank = false;                  // kappa > 0: the gradient terms are built
-};
+// What a body holds of its constitutive model: one alternative per model of the
+// material catalog (src/materials/catalog.def), each materials::<model>::BodyMaterial.
+// Every alternative has the same interface (docs/materials.md), so the per-step
+// functions below dispatch once per body with std::visit and call the model's inline
+// kernel per point: no virtual call per particle.
+//   static constexpr bool needs_director;  the body carries a DirectorField
+//   Mat3 first_piola(Index L, const Mat3& F, const Mat3& grad_h, Mat3* frank_flux,
+//                    const DirectorField* director) const;
+//   double energy(Index L, const Mat3& F, const DirectorField* director) const;
+//   double wave_speed(Index L, const Mat3& F, const DirectorField* director, double rho0) const;
+//   double shear_modulus(Index L) const;
+//   std::size_t state_bytes() const;       its per-point arrays (memory accounting)
+using Material = detail::VariantAfterVoid<void
+#define RKPM_MATERIAL(model) , materials::model::BodyMaterial
+#include "materials/catalog.def"
+#undef RKPM_MATERIAL
+                                          >::type;
 
 struct Body {
   std::string name;
@@ -84,7 +84,6 @@ struct Body {
   Body& operator=(const Body&) = delete;
 
   std::size_t size() const { return cloud.size(); }
-  bool is_lce() const { return std::holds_alternative<LCEMaterial>(material); }
 };
 
 // x = X + d.

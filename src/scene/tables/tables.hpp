@@ -11,7 +11,7 @@ namespace rkpm::scene::tables {
 std::vector<ParamTable> run_sections();     // [scene], [integrator], [output]
 ParamTable body();                          // [[body]]
 std::vector<ParamTable> body_details();     // [body.director], [body.rk], [body.initial], [[body.boundary]]
+// The variants of [body.material] come from the material catalog (src/materials/catalog.hpp).
 std::vector<ParamTable> cloud_generators(); // variants of [body.cloud], selected by `generator`
-std::vector<ParamTable> materials();        // variants of [body.material], selected by `model`
 
 }  // namespace rkpm::scene::tables

@@ -124,7 +124,7 @@ TEST(ContactStiffnessLaw, ScalesEpsByTheSubstrateShearModulus) {
   // Substrate: two particles with shear moduli 1000 and 3000 Pa (mean 2000).
   auto probe = testing::particle_body("probe", {Vec3(0, 0, 0.12)}, {1.0});
   auto sub = testing::particle_body("substrate", {Vec3::Zero(), Vec3(5, 0, 0)}, {1.0, 1.0});
-  auto& mr = std::get<MooneyRivlinMaterial>(sub->material).at_point;
+  auto& mr = std::get<materials::mooney_rivlin::BodyMaterial>(sub->material).at_point;
   mr[1].c1 *= 3.0;
   mr[1].c2 *= 3.0;
   ContactSettings s;

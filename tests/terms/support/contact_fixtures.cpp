@@ -24,7 +24,7 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   mr.c1 = 400.0;
   mr.c2 = 100.0;
   mr.lambda = 2000.0;
-  body->material = MooneyRivlinMaterial{std::vector<materials::MooneyRivlin>(n, mr)};
+  body->material = materials::mooney_rivlin::BodyMaterial{std::vector<materials::MooneyRivlin>(n, mr)};
   return body;
 }
 

@@ -1,6 +1,6 @@
-#include "rkpm/materials/liquid_crystal_elastomer.hpp"
+#include "materials/lce/liquid_crystal_elastomer.hpp"
 
-#include "parameter_checks.hpp"
+#include "materials/parameter_checks.hpp"
 
 #include <Eigen/Eigenvalues>
 

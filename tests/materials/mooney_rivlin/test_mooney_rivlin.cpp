@@ -1,6 +1,6 @@
 // Modified Mooney-Rivlin (seed Eq. 9-11): stress is the energy's derivative,
 // objectivity, the Cauchy formula of VERIFICATION section 2 and its table.
-#include "rkpm/materials/mooney_rivlin.hpp"
+#include "materials/mooney_rivlin/mooney_rivlin.hpp"
 
 #include "support/finite_differences.hpp"
 #include "support/random_tensors.hpp"

@@ -1,6 +1,6 @@
-#include "rkpm/materials/mooney_rivlin.hpp"
+#include "materials/mooney_rivlin/mooney_rivlin.hpp"
 
-#include "parameter_checks.hpp"
+#include "materials/parameter_checks.hpp"
 
 namespace rkpm::materials {
 

@@ -1,7 +1,7 @@
 // Shared material choices for the liquid-crystal elastomer tests.
 #pragma once
 
-#include "rkpm/materials/liquid_crystal_elastomer.hpp"
+#include "materials/lce/liquid_crystal_elastomer.hpp"
 
 namespace rkpm::materials::testing {
 

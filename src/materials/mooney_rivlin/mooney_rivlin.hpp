@@ -20,7 +20,7 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/materials/kinematics.hpp"
+#include "materials/kinematics.hpp"
 
 #include <algorithm>
 #include <cmath>

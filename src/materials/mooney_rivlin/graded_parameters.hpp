@@ -10,7 +10,7 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/materials/mooney_rivlin.hpp"
+#include "materials/mooney_rivlin/mooney_rivlin.hpp"
 
 namespace rkpm::materials {
 

@@ -1,4 +1,5 @@
-#include "rkpm/sim/activity_field.hpp"
+// The activity field of an LCE body (compiled into rkpm_sim).
+#include "materials/lce/body_material_activity.hpp"
 
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/sim/build.hpp"
@@ -8,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace rkpm::sim {
+namespace rkpm::materials::lce {
+
+using sim::SetupError;
 
 namespace {
 
@@ -65,9 +68,8 @@ std::vector<double> relative_axis_distance(const particles::Cloud& cloud, const 
 // all = 1; inner / outer = the half of a shell's wall nearer that surface (that half grows
 // or shrinks in-plane, the other does not: the wall bends like a bimetal strip);
 // bending = +1 in the inner half and -1 in the outer half (a pure bending moment).
-void apply_layer(const particles::Cloud& cloud, const scene::ParamSet& m, const std::string& key,
-                 std::vector<double>& profile) {
-  const std::string layer = m.choice(key);
+void apply_layer(const particles::Cloud& cloud, const std::string& layer, const scene::ParamSet& m,
+                 const std::string& key, std::vector<double>& profile) {
   if (layer == "all") return;
   if (cloud.surface_bit("inner") == 0u || cloud.surface_bit("outer") == 0u)
     throw SetupError(fmt::format("{}:{}: [body.material] {} = \"{}\": expected \"all\" for a cloud "
@@ -86,15 +88,15 @@ void apply_layer(const particles::Cloud& cloud, const scene::ParamSet& m, const 
 //             inner / outer half (bending);
 //   w_rim   = |s|^q: where the wall normal is perpendicular to the axis (a cell's rim),
 //             q = zeta_rim_power, times its own through-the-wall factor (zeta_rim_layer).
-std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body, double& reference_zeta) {
-  const auto& m = spec.material;
-  const std::string profile = m.choice("zeta_profile");
-  const double zeta = m.real("zeta"), zeta_rim = m.real("zeta_rim");
+std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& m, const sim::Body& body,
+                                   double& reference_zeta) {
+  const std::string& profile = settings.zeta_profile;
+  const double zeta = settings.zeta, zeta_rim = settings.zeta_rim;
   reference_zeta = zeta != 0.0 ? zeta : zeta_rim;
-  if (profile == "uniform" && m.choice("zeta_layer") == "all" && zeta_rim == 0.0) return {};
+  if (profile == "uniform" && settings.zeta_layer == "all" && zeta_rim == 0.0) return {};
   if (reference_zeta == 0.0) return {};
 
-  const Vec3 axis_raw = m.vec3("zeta_axis");
+  const Vec3 axis_raw = settings.zeta_axis;
   if (!(axis_raw.norm() > 0.0))
     throw SetupError(fmt::format("{}:{}: [body.material] zeta_axis = [0, 0, 0]: expected a non-zero vector",
                                  m.file(), m.line("zeta_axis")));
@@ -103,7 +105,7 @@ std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body
   auto cos2 = [&](std::size_t i) { return std::min(1.0, std::pow(body.director->h0[i].dot(axis), 2)); };
 
   std::vector<double> face(n, 1.0);
-  const double power = m.real("zeta_power");
+  const double power = settings.zeta_power;
   if (profile == "radial") {
     const auto rho = relative_axis_distance(body.cloud, axis);
     for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(std::max(0.0, 1.0 - rho[i] * rho[i]), power);
@@ -115,15 +117,15 @@ std::vector<double> activity_field(const scene::BodySpec& spec, const Body& body
 
   std::vector<double> rim(n, 0.0);
   if (zeta_rim != 0.0) {
-    const double rim_power = m.real("zeta_rim_power");
+    const double rim_power = settings.zeta_rim_power;
     for (std::size_t i = 0; i < n; ++i) rim[i] = std::pow(1.0 - cos2(i), 0.5 * rim_power);
   }
-  apply_layer(body.cloud, m, "zeta_layer", face);
-  apply_layer(body.cloud, m, "zeta_rim_layer", rim);
+  apply_layer(body.cloud, settings.zeta_layer, m, "zeta_layer", face);
+  apply_layer(body.cloud, settings.zeta_rim_layer, m, "zeta_rim_layer", rim);
 
   std::vector<double> activity(n);
   for (std::size_t i = 0; i < n; ++i) activity[i] = (zeta * face[i] + zeta_rim * rim[i]) / reference_zeta;
   return activity;
 }
 
-}  // namespace rkpm::sim
+}  // namespace rkpm::materials::lce

@@ -1,5 +1,5 @@
 // Graded Mooney-Rivlin parameters (seed Eq. 18).
-#include "rkpm/materials/graded_parameters.hpp"
+#include "materials/mooney_rivlin/graded_parameters.hpp"
 
 #include "support/random_tensors.hpp"
 

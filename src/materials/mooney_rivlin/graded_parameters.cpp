@@ -1,6 +1,6 @@
-#include "rkpm/materials/graded_parameters.hpp"
+#include "materials/mooney_rivlin/graded_parameters.hpp"
 
-#include "parameter_checks.hpp"
+#include "materials/parameter_checks.hpp"
 
 #include <fmt/format.h>
 

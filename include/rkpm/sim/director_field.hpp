@@ -1,0 +1,25 @@
+// The director field of a body whose material carries one (the LCE, seed Eq. 5-8):
+// per-particle state the force pass reads and the director update advances.
+#pragma once
+
+#include "rkpm/common/types.hpp"
+
+#include <vector>
+
+namespace rkpm::sim {
+
+struct DirectorField {
+  std::vector<Vec3> h;                 // current director per particle (unit)
+  std::vector<Vec3> h0;                // reference director per particle (unit)
+  std::vector<Mat3> grad_h;            // Grad_X h per integration point (Frank term only)
+  std::vector<Mat3> frank_flux;        // dW/d(Grad_X h) per point (Frank term only)
+  std::vector<Vec3> frank_divergence;  // Div_X of the flux at particles (Frank term only)
+  std::vector<Vec3> rate;              // dh/dt
+  std::vector<Mat3> F_rate;            // dF/dt per point (velocity gradient l = dF/dt F^-1)
+  std::vector<Vec3> normals;           // scratch: current outward normals of the surface
+  bool evolve = true;                  // integrate Eq. 5-7
+  bool anchored = true;                // Eq. 8: h = current outward normal on the surface
+  bool frank = false;                  // kappa > 0: the gradient terms are built
+};
+
+}  // namespace rkpm::sim

@@ -1,0 +1,44 @@
+// The constitutive models a scene can select, taken from catalog.def: the scene
+// registry validates [body.material] tables against `material_tables()`, and
+// build_world gives a body its material through `make_material`. Nothing outside a
+// model's folder compares its model string.
+#pragma once
+
+#include "rkpm/scene/param_spec.hpp"
+
+#include <string>
+#include <vector>
+
+namespace rkpm::scene {
+struct BodySpec;
+}
+namespace rkpm::sim {
+struct Body;
+}
+
+namespace rkpm::materials {
+
+// Each model's entry points. `build` sets body.material (and whatever else of the body
+// the model owns) from the validated [body.material] table; the cloud, the RK
+// operators, the initial state and the director field (for a model that needs one)
+// exist when it is called. It throws std::invalid_argument naming the parameter.
+#define RKPM_MATERIAL(model)                                       \
+  namespace model {                                                \
+  scene::ParamTable table();                                       \
+  void build(const scene::BodySpec& spec, sim::Body& body);        \
+  }
+#include "materials/catalog.def"
+#undef RKPM_MATERIAL
+
+// The [body.material] variant tables, in catalog order (rkpm_scene: the registry's source).
+std::vector<scene::ParamTable> material_tables();
+
+// A [body.material] variant table with its selector set: the start of every model's table.
+// `director`: the model carries a director field, so its bodies take a [body.director] table.
+scene::ParamTable material_table(std::string model, std::string help, bool director = false);
+
+// Gives the body the material its validated [body.material] table declares (rkpm_sim).
+// Throws sim::SetupError naming the file, line and body when the parameters are invalid.
+void make_material(const scene::BodySpec& spec, sim::Body& body);
+
+}  // namespace rkpm::materials

@@ -1,0 +1,38 @@
+// An LCE body's material from its [body.material] table (compiled into rkpm_sim): the
+// model's parameters, the Frank term's arrays of the director field, and the activity.
+#include "materials/lce/body_material.hpp"
+
+#include "materials/catalog.hpp"
+#include "materials/lce/body_material_activity.hpp"
+#include "materials/lce/settings.hpp"
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/body.hpp"
+
+namespace rkpm::materials::lce {
+
+void build(const scene::BodySpec& spec, sim::Body& body) {
+  const Settings s = settings_table().read(spec.material);
+  BodyMaterial material;
+  auto& model = material.model;
+  model.mu = s.mu;
+  model.K = s.bulk;
+  model.s = s.s;
+  model.kappa = s.kappa;
+  model.mobility = s.mobility;
+  model.zeta = s.zeta;
+  model.validate();
+
+  // The Frank term (kappa > 0) needs Grad_X h, its flux and the flux's divergence.
+  sim::DirectorField& dir = *body.director;
+  const std::size_t n = body.size();
+  dir.frank = model.kappa > 0.0;
+  if (dir.frank) {
+    dir.grad_h.assign(n, Mat3::Zero());
+    dir.frank_flux.assign(n, Mat3::Zero());
+    dir.frank_divergence.assign(n, Vec3::Zero());
+  }
+  material.activity = activity_field(s, spec.material, body, model.zeta);
+  body.material = std::move(material);
+}
+
+}  // namespace rkpm::materials::lce

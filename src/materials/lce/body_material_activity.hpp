@@ -1,0 +1,22 @@
+// The spatial activity field of an active LCE body (seed Eq. 1: sigma_a = -zeta h x h),
+// from the activity settings of its [body.material] table: zeta, zeta_profile,
+// zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power and zeta_rim_layer.
+#pragma once
+
+#include "materials/lce/settings.hpp"
+#include "rkpm/scene/param_set.hpp"
+#include "rkpm/sim/body.hpp"
+
+#include <vector>
+
+namespace rkpm::materials::lce {
+
+// Per-particle activity zeta_L relative to `reference_zeta` (set here to zeta, or to
+// zeta_rim when zeta = 0); empty when the activity is uniform. `body` must have its
+// cloud and director field. `table` is the [body.material] table the settings were read
+// from, for the file and line of an error. Throws sim::SetupError naming the key for an
+// inconsistent choice.
+std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& table, const sim::Body& body,
+                                   double& reference_zeta);
+
+}  // namespace rkpm::materials::lce

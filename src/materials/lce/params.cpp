@@ -1,0 +1,74 @@
+// The [body.material] table of model = "lce" (compiled into rkpm_scene): the kernel's
+// parameters and the activity field's. Its bodies take a [body.director] table.
+#include "materials/catalog.hpp"
+#include "materials/lce/settings.hpp"
+
+namespace rkpm::materials::lce {
+
+using scene::ParamSpec;
+
+const scene::SettingsTable<Settings>& settings_table() {
+  static const auto table =
+      scene::SettingsTable<Settings>(
+          material_table("lce",
+                         "Active liquid-crystal elastomer (seed Eq. 1-8): neo-classical free energy with "
+                         "step-length anisotropy, Frank elasticity, active stress and a director field "
+                         "(see [body.director]).",
+                         /*director=*/true))
+          .bind(&Settings::mu,
+                ParamSpec::real("mu", "Pa").greater_than(0).mark_required().help("Shear modulus mu (Eq. 2)."))
+          .bind(&Settings::bulk,
+                ParamSpec::real("bulk", "Pa").greater_than(0).mark_required()
+                  .help("Penalty bulk modulus K that replaces the pressure p of Eq. 3 (p = -K ln J / J). "
+                        "No default: it must be chosen relative to mu (100 to 1000 mu is nearly incompressible)."))
+          .bind(&Settings::s,
+                ParamSpec::real("s", "-").greater_than(0).at_most(100).defaults(2.0)
+                  .help("Step-length anisotropy s = l_parallel / l_perpendicular (Eq. 2); 1 = isotropic."))
+          .bind(&Settings::kappa,
+                ParamSpec::real("kappa", "N").at_least(0).defaults(0.0).help("Frank modulus kappa (Eq. 2)."))
+          .bind(&Settings::mobility,
+                ParamSpec::real("mobility", "1/(Pa s)").at_least(0).defaults(0.0)
+                  .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only."))
+          .bind(&Settings::zeta,
+                ParamSpec::real("zeta", "Pa").defaults(0.0)
+                  .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
+                        "along h (contractile), zeta > 0 elongates it (extensile)."))
+          .bind(&Settings::zeta_profile,
+                ParamSpec::choice("zeta_profile", {"uniform", "axial", "equatorial", "radial"}).defaults(std::string("uniform"))
+                  .help("Spatial profile of the activity, with c = h0 . a the cosine between the reference director and "
+                        "a = zeta_axis: uniform = zeta everywhere; axial = zeta |c|^p, full activity where h0 is along the "
+                        "axis (a cell's flat faces), none where it is perpendicular (its rim); equatorial = zeta "
+                        "(1 - c^2)^(p/2), the complement: active at the rim, passive in the faces; radial = zeta (1 - rho^2)^p, "
+                        "rho = distance of X from the axis through the centroid over the largest such distance: full "
+                        "activity at the centre of a cell's faces, none at its rim (p = zeta_power)."))
+          .bind(&Settings::zeta_power,
+                ParamSpec::real("zeta_power", "-").at_least(0.5).at_most(64).defaults(2.0)
+                  .help("Exponent p of the axial / equatorial activity profile; larger p confines the activity to "
+                        "where h0 is closer to (axial) or further from (equatorial) the axis."))
+          .bind(&Settings::zeta_layer,
+                ParamSpec::choice("zeta_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
+                  .help("Through-the-wall profile of the activity in a shell: all = the whole wall; inner / outer = "
+                        "only the half of the wall nearer that surface, which bends the wall like a bimetal strip; "
+                        "bending = zeta in the inner half and -zeta in the outer half, a pure bending moment "
+                        "(spontaneous curvature) with no net change of the wall's area."))
+          .bind(&Settings::zeta_rim,
+                ParamSpec::real("zeta_rim", "Pa").defaults(0.0)
+                  .help("Activity added at a cell's rim, through the whole wall: zeta_rim |s|^q with s the sine of the "
+                        "angle between h0 and zeta_axis (1 where the wall normal is perpendicular to the axis) and "
+                        "q = zeta_rim_power, through the part of the wall that zeta_rim_layer names. zeta_rim > 0 "
+                        "(extensile along the wall normal) shrinks the rim in-plane."))
+          .bind(&Settings::zeta_rim_power,
+                ParamSpec::real("zeta_rim_power", "-").at_least(0.5).at_most(64).defaults(2.0)
+                  .help("Exponent q of the rim activity profile |s|^q; larger q confines it to a narrower band."))
+          .bind(&Settings::zeta_rim_layer,
+                ParamSpec::choice("zeta_rim_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
+                  .help("Through-the-wall profile of the rim activity, as zeta_layer is for zeta."))
+          .bind(&Settings::zeta_axis,
+                ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
+                  .help("Axis a of the axial activity profile (normalised; must be non-zero)."));
+  return table;
+}
+
+scene::ParamTable table() { return settings_table().table(); }
+
+}  // namespace rkpm::materials::lce

@@ -1,0 +1,31 @@
+// Settings of the lce model, read from its [body.material] table (params.cpp).
+#pragma once
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/scene/settings_table.hpp"
+
+#include <string>
+
+namespace rkpm::materials::lce {
+
+struct Settings {
+  // The kernel's parameters (liquid_crystal_elastomer.hpp, Eq. 1-7).
+  double mu = 0.0;        // [Pa]
+  double bulk = 0.0;      // [Pa] K
+  double s = 2.0;         // [-]
+  double kappa = 0.0;     // [N]
+  double mobility = 0.0;  // [1/(Pa s)]
+  double zeta = 0.0;      // [Pa]
+  // The spatial activity field (body_material_activity.cpp).
+  std::string zeta_profile = "uniform";  // uniform, axial, equatorial or radial
+  double zeta_power = 2.0;               // [-] p
+  std::string zeta_layer = "all";        // all, inner, outer or bending
+  double zeta_rim = 0.0;                 // [Pa]
+  double zeta_rim_power = 2.0;           // [-] q
+  std::string zeta_rim_layer = "all";    // all, inner, outer or bending
+  Vec3 zeta_axis = Vec3::UnitZ();        // [-] a (not normalised)
+};
+
+const scene::SettingsTable<Settings>& settings_table();
+
+}  // namespace rkpm::materials::lce
