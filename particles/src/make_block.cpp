@@ -1,6 +1,6 @@
 #include "rkpm/particles/generators.hpp"
 
-#include "random.hpp"
+#include "rkpm/common/split_mix64.hpp"
 #include "structured_grid.hpp"
 
 #include <sstream>
@@ -23,7 +23,7 @@ Cloud make_block(const BlockSpec& spec) {
 
   const detail::StructuredGrid grid{c};
   const Vec3 h = spec.size.cwiseQuotient(Vec3(c[0], c[1], c[2]));
-  detail::SplitMix64 rng(spec.seed);
+  SplitMix64 rng(spec.seed);
 
   Cloud cloud;
   cloud.name = "block";

@@ -5,6 +5,8 @@
 #include "rkpm/rk/row_scatter.hpp"
 
 #include <fmt/format.h>
+
+#include <functional>
 #include <omp.h>
 
 #include <algorithm>
@@ -95,6 +97,31 @@ GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows,
   op.weight = std::move(weight);
   op.n_columns = n_particles;
   return op;
+}
+
+// Psi_I at each of `points` (in parallel), stored row by row in CSR form: the shape of
+// the boundary quadrature and of the nodal interpolation. A point the approximation
+// cannot handle is diagnosed serially afterwards, named by label(p).
+void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
+                         std::vector<Index>& col, std::vector<double>& psi,
+                         const std::function<std::string(std::size_t)>& label) {
+  const std::size_t m = points.size();
+  std::vector<ShapeValues> values(m);
+  FirstError error;
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::size_t p = 0; p < m; ++p)
+    if (!rk.evaluate(points[p], values[p], false)) error.record(static_cast<Index>(p), "");
+  try {
+    error.rethrow();
+  } catch (const ApproximationError&) {
+    for (std::size_t p = 0; p < m; ++p) rk.evaluate_or_throw(points[p], values[p], false, label(p));
+  }
+  row_offset.assign(m + 1, 0);
+  for (std::size_t p = 0; p < m; ++p) {
+    row_offset[p + 1] = row_offset[p] + static_cast<Index>(values[p].ids.size());
+    col.insert(col.end(), values[p].ids.begin(), values[p].ids.end());
+    psi.insert(psi.end(), values[p].psi.begin(), values[p].psi.end());
+  }
 }
 
 }  // namespace
@@ -204,49 +231,17 @@ BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, cons
         q.surface_mask.push_back(face_surfaces(cloud, f.face));
       }
   }
-  const std::size_t m = q.point.size();
-  std::vector<ShapeValues> values(m);
-  FirstError error;
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t p = 0; p < m; ++p)
-    if (!rk.evaluate(q.point[p], values[p], false)) error.record(q.owner[p], "");
-  try {
-    error.rethrow();
-  } catch (const ApproximationError&) {
-    for (std::size_t p = 0; p < m; ++p)
-      rk.evaluate_or_throw(q.point[p], values[p], false,
-                           particle_label(cloud, q.owner[p]) + " (a boundary quadrature point)");
-  }
-  q.row_offset.assign(m + 1, 0);
-  for (std::size_t p = 0; p < m; ++p) {
-    q.row_offset[p + 1] = q.row_offset[p] + static_cast<Index>(values[p].ids.size());
-    q.col.insert(q.col.end(), values[p].ids.begin(), values[p].ids.end());
-    q.psi.insert(q.psi.end(), values[p].psi.begin(), values[p].psi.end());
-  }
+  shape_function_rows(rk, q.point, q.row_offset, q.col, q.psi, [&](std::size_t p) {
+    return particle_label(cloud, q.owner[p]) + " (a boundary quadrature point)";
+  });
   return q;
 }
 
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk) {
-  const std::size_t n = cloud.size();
-  std::vector<ShapeValues> values(n);
-  FirstError error;
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t j = 0; j < n; ++j)
-    if (!rk.evaluate(cloud.X[j], values[j], false)) error.record(static_cast<Index>(j), "");
-  try {
-    error.rethrow();
-  } catch (const ApproximationError&) {
-    for (std::size_t j = 0; j < n; ++j)
-      rk.evaluate_or_throw(cloud.X[j], values[j], false, particle_label(cloud, static_cast<Index>(j)));
-  }
   NodalInterpolation interp;
-  interp.row_offset.assign(n + 1, 0);
-  for (std::size_t j = 0; j < n; ++j) {
-    interp.row_offset[j + 1] = interp.row_offset[j] + static_cast<Index>(values[j].ids.size());
-    interp.col.insert(interp.col.end(), values[j].ids.begin(), values[j].ids.end());
-    interp.psi.insert(interp.psi.end(), values[j].psi.begin(), values[j].psi.end());
-  }
-  interp.transpose.build(interp.row_offset, interp.col, static_cast<Index>(n));
+  shape_function_rows(rk, cloud.X, interp.row_offset, interp.col, interp.psi,
+                      [&](std::size_t j) { return particle_label(cloud, static_cast<Index>(j)); });
+  interp.transpose.build(interp.row_offset, interp.col, static_cast<Index>(cloud.size()));
   return interp;
 }
 

@@ -1,6 +1,7 @@
 #include "rkpm/sim/build.hpp"
 
 #include "materials/catalog.hpp"
+#include "rkpm/common/split_mix64.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/scene/cloud_recipe.hpp"
@@ -127,18 +128,6 @@ std::vector<double> shortest_edges(const particles::Cloud& cloud) {
   return h;
 }
 
-// Uniform in [-1, 1) from a 64-bit generator (splitmix64): the same on every platform.
-struct Random {
-  std::uint64_t state;
-  double uniform() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
-  }
-};
-
 std::vector<ConstrainedComponent> constrained_components(const scene::BodySpec& spec, const particles::Cloud& cloud) {
   std::vector<ConstrainedComponent> out;
   for (const auto& bc : spec.boundaries) {
@@ -187,13 +176,13 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   const Vec3 centre = centroid(cloud);
   const Vec3 velocity = spec.initial.vec3("velocity");
   const double noise = spec.initial.real("random_velocity");
-  Random random{seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id)};
+  SplitMix64 random(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id));
   body->d.resize(n);
   body->v.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     body->d[i] = (stretch.array() - 1.0).matrix().cwiseProduct(cloud.X[i] - centre);
     body->v[i] = velocity;
-    if (noise > 0.0) body->v[i] += noise * Vec3(random.uniform(), random.uniform(), random.uniform());
+    if (noise > 0.0) body->v[i] += noise * Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
   }
   body->a.assign(n, Vec3::Zero());
   body->x.resize(n);

@@ -2,6 +2,7 @@
 // whose values use all 52 mantissa bits, so only a bit-exact round trip passes.
 #pragma once
 
+#include "rkpm/common/split_mix64.hpp"
 #include "rkpm/io/frame.hpp"
 
 #include <gtest/gtest.h>
@@ -32,22 +33,7 @@ class ScratchDir : public ::testing::Test {
   std::filesystem::path dir;
 };
 
-// splitmix64: a fixed, portable sequence (std distributions are implementation-defined).
-class SplitMix64 {
- public:
-  explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [lo, hi) with 53 random bits.
-  double uniform(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
-};
+using rkpm::SplitMix64;  // a fixed, portable sequence (std distributions are implementation-defined)
 
 // A 2 x 2 x 1 block of hexahedra (3 x 3 x 2 = 18 points), jittered.
 inline std::vector<Vec3> hex_block_points(std::uint64_t seed) {

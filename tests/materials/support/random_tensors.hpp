@@ -1,8 +1,9 @@
 // Deterministic random numbers and random tensors for the material tests.
-// SplitMix64 with a hand-written uniform: the same numbers on every platform
-// (std:: distributions are implementation-defined).
+// The project's SplitMix64: the same numbers on every platform (std:: distributions
+// are implementation-defined).
 #pragma once
 
+#include "rkpm/common/split_mix64.hpp"
 #include "rkpm/common/types.hpp"
 
 #include <Eigen/Geometry>
@@ -12,23 +13,8 @@
 
 namespace rkpm::materials::testing {
 
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : state_(seed) {}
-
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) with 53 random bits.
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-  double uniform(double a, double b) { return a + (b - a) * uniform(); }
-
- private:
-  std::uint64_t state_;
-};
+// uniform() in [0, 1), uniform(a, b) in [a, b): the project's generator.
+using Rng = SplitMix64;
 
 // Uniform on the unit sphere (rejection from the cube).
 inline Vec3 random_unit_vector(Rng& rng) {

@@ -40,12 +40,4 @@ BuiltWorld world_from_text(const std::string& toml) {
   return w;
 }
 
-double Random::uniform() {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  z ^= z >> 31;
-  return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
-}
-
 }  // namespace rkpm::sim::testing

@@ -3,6 +3,7 @@
 // from inline scene text, and a deterministic random generator.
 #pragma once
 
+#include "rkpm/common/split_mix64.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/world.hpp"
 
@@ -29,11 +30,12 @@ struct BuiltWorld {
 };
 BuiltWorld world_from_text(const std::string& toml);
 
-// splitmix64: the same sequence on every platform; uniform in [-1, 1).
+// Random numbers uniform in [-1, 1), the same on every platform.
 struct Random {
-  std::uint64_t state;
-  double uniform();
+  explicit Random(std::uint64_t seed) : generator(seed) {}
+  double uniform() { return generator.symmetric_unit(); }
   Vec3 vector() { return Vec3(uniform(), uniform(), uniform()); }
+  SplitMix64 generator;
 };
 
 }  // namespace rkpm::sim::testing
