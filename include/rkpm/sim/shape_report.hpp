@@ -15,7 +15,7 @@
 // (|n_z| >= |n| / 2): at the rim the inner surface turns vertical and its top and bottom
 // meet, and there the split would measure no fluid at all. The smallest gap is taken
 // per radial bin and angular sector, so a crossing on one side is not averaged away.
-// Without the wall_contact term (sim/wall_contact.hpp) nothing stops the two walls of
+// Without the wall_contact term (src/terms/wall_contact/) nothing stops the two walls of
 // one body from passing through each other; a negative gap flags such a shape as not
 // physical (`walls_crossed`).
 #pragma once

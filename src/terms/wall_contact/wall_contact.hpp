@@ -6,7 +6,7 @@
 //     w(r) = (p0 / s0) [(s0/r)^12 - 2 (s0/r)^6 + 1]   for r < s0,   0 beyond,
 //     Pi_W = sum_{I<J, |X_I - X_J| >= exclusion} A_I A_J w(|p_I - p_J|),
 // over the particles I, J of one named surface with reference boundary areas A, at
-// their physical positions p (as the contact term, sim/contact.hpp). Two flat sheets
+// their physical positions p (as the contact term, terms/contact/contact.hpp). Two flat sheets
 // at gap d < s0 then press on each other with the continuum pressure
 //     p(d) = 2 pi p0 (d/s0) [(s0/d)^12 - 2 (s0/d)^6 + 1],
 // (4.4 p0 at d = 0.9 s0, 40 p0 at 0.8 s0): p0 sets the stiffness, s0 the distance at

@@ -1,4 +1,4 @@
-// The enclosed-volume constraint (sim/volume_constraint.hpp): the volume it measures
+// The enclosed-volume constraint (src/terms/volume_constraint/): the volume it measures
 // scales exactly as lambda^3 under a uniform dilation (the RK functions reproduce
 // linear fields and Nanson's map is exact for a homogeneous F), and how far its force
 // is from minus the gradient of its stored energy (central differences): the force is

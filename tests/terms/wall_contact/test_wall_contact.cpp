@@ -1,4 +1,4 @@
-// The wall_contact term (sim/wall_contact.hpp): no force in the reference state, forces
+// The wall_contact term (src/terms/wall_contact/): no force in the reference state, forces
 // equal to minus the gradient of its energy (central differences), no net force, and
 // a shell pressed flat keeps its two faces apart where without the term they pass
 // through each other.
