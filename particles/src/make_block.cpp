@@ -22,6 +22,7 @@ Cloud make_block(const BlockSpec& spec) {
   }
 
   const detail::StructuredGrid grid{c};
+  grid.check("make_block");
   const Vec3 h = spec.size.cwiseQuotient(Vec3(c[0], c[1], c[2]));
   SplitMix64 rng(spec.seed);
 

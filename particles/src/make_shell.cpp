@@ -3,6 +3,7 @@
 #include "rkpm/particles/generators.hpp"
 
 #include "cube_sphere.hpp"
+#include "structured_grid.hpp"
 #include "meridian_sampling.hpp"
 #include "node_merge.hpp"
 
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <vector>
 
@@ -92,6 +94,10 @@ void check(const ShellSpec& spec) {
         << spec.semi_axes.transpose() << ")";
   }
   if (!msg.str().empty()) throw CloudError("make_shell: " + msg.str());
+  // Particles: layers x (6 n^2 + 2), counted in 64 bits before any array is sized.
+  const double n = spec.face_cells, count = spec.layers * (6.0 * n * n + 2.0);
+  detail::check_index_range(count > 9e18 ? std::numeric_limits<std::int64_t>::max() : static_cast<std::int64_t>(count),
+                            "make_shell");
 }
 
 }  // namespace

@@ -34,6 +34,7 @@ Cloud make_sphere(const SphereSpec& spec) {
   }
   const int n = spec.cells;
   const detail::StructuredGrid grid{{n, n, n}};
+  grid.check("make_sphere");
   Cloud cloud;
   cloud.name = "sphere";
   cloud.surface_names = {"surface"};

@@ -5,11 +5,31 @@
 #include "rkpm/particles/cloud.hpp"
 
 #include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
 
 namespace rkpm::particles::detail {
 
+// Throws CloudError unless `count` particles (or elements) of the generator `what` can
+// be indexed by the 32-bit ids of a cloud; the products are formed in 64 bits first.
+inline void check_index_range(std::int64_t count, const std::string& what) {
+  if (count > std::numeric_limits<std::int32_t>::max())
+    throw CloudError(what + ": " + std::to_string(count) + " particles or cells, more than the " +
+                     std::to_string(std::numeric_limits<std::int32_t>::max()) + " a 32-bit index can address");
+}
+
 struct StructuredGrid {
   std::array<int, 3> cells;
+
+  // Throws CloudError (naming `what`) when the grid's nodes cannot be indexed.
+  void check(const std::string& what) const {
+    std::int64_t nodes = 1;
+    for (int axis = 0; axis < 3; ++axis) {
+      nodes *= std::int64_t{cells[axis]} + 1;
+      check_index_range(nodes, what);
+    }
+  }
 
   int nodes_along(int axis) const { return cells[axis] + 1; }
   int n_nodes() const { return nodes_along(0) * nodes_along(1) * nodes_along(2); }

@@ -1,6 +1,7 @@
 // rkpm: the command-line program.
 //   rkpm run SCENE.toml [--out DIR] [--threads N] [--restart CHECKPOINT]
 //   rkpm shape SCENE.toml FRAME.vtu|RUN_DIR [--body NAME] [--csv FILE]
+//   rkpm check SCENE.toml [--out DIR] [--memory-limit SIZE]
 //   rkpm params [--markdown]
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
@@ -35,6 +36,11 @@ int main(int argc, char** argv) {
   run->add_option("--max-steps", max_steps, "Stop after this many steps (a partial run; exit code 0)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--quiet", quiet, "No progress line");
+  std::string memory_limit;
+  bool dry_run = false;
+  run->add_option("--memory-limit", memory_limit,
+                  "Refuse a scene whose estimated memory exceeds this (e.g. 8G; default: what the machine has)");
+  run->add_flag("--dry-run", dry_run, "Print what the scene will cost (as `rkpm check`) and stop");
   run->add_flag("--allow-unstable-dt", allow_unstable,
                 "Keep a requested dt above the stable estimate (for testing the blow-up diagnosis)");
 
@@ -45,6 +51,12 @@ int main(int argc, char** argv) {
   shape->add_option("frame", shape_frame, "A .vtu frame, or the run's output directory (its last frame)")->required();
   shape->add_option("--body", shape_options.body, "Shell body to measure (default: [output] shape_report)");
   shape->add_option("--csv", shape_csv, "Profile CSV to write (default: shape_profile.csv beside the frame)");
+
+  auto* check = app.add_subcommand(
+      "check", "Validate a scene and print what it will cost: particles, operator entries, memory, output size");
+  check->add_option("scene", scene_path, "Scene file (TOML)")->required();
+  check->add_option("--out", out_dir, "Output directory whose free space is checked (default: out/<scene name>)");
+  check->add_option("--memory-limit", memory_limit, "Memory the run may use (e.g. 8G; default: what the machine has)");
 
   auto* params = app.add_subcommand("params", "Print every scene parameter: section, key, type, unit, default, range, help");
   bool markdown = false;
@@ -82,6 +94,25 @@ int main(int argc, char** argv) {
   options.max_steps_override = max_steps;
   options.quiet = quiet;
   options.allow_unstable_dt = allow_unstable;
+  try {
+    if (!memory_limit.empty()) options.limits.memory_bytes = rkpm::sim::parse_byte_size(memory_limit);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return rkpm::sim::kBadInput;
+  }
+  if (*check || dry_run) {
+    // The estimate, then the verdict a run would give: 0 when it fits, 2 when it would be refused.
+    const auto estimate = rkpm::sim::estimate_run(scene);
+    rkpm::sim::print_estimate(std::cout, scene, estimate, options.limits, options.out_dir);
+    try {
+      rkpm::sim::check_limits(scene, estimate, options.limits, options.out_dir);
+    } catch (const rkpm::sim::PreflightError& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      return rkpm::sim::kBadInput;
+    }
+    std::cout << "fits: a run of this scene is not refused for its size\n";
+    return rkpm::sim::kSuccess;
+  }
   try {
     return rkpm::sim::run_scene(scene, options, std::cerr);
   } catch (const std::exception& e) {

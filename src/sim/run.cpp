@@ -42,7 +42,14 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   const auto wall_start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
 
-  // Everything that can fail on user input happens before the output directory exists.
+  // Everything that can fail on user input happens before the output directory exists,
+  // and what the scene will cost is checked before anything large is allocated.
+  try {
+    check_limits(scene, estimate_run(scene), options.limits, options.out_dir);
+  } catch (const PreflightError& e) {
+    log << "error: " << e.what() << "\n";
+    return kBadInput;
+  }
   std::unique_ptr<World> world;
   try {
     world = build_world(scene);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/preflight.hpp"
 
 #include <filesystem>
 #include <iosfwd>
@@ -25,6 +26,7 @@ struct RunOptions {
   std::int64_t max_steps_override = 0;  // > 0: stop (successfully) after this many steps
   bool allow_unstable_dt = false;     // testing: keep a user dt above the stable estimate
   bool quiet = false;                 // no progress line
+  RunLimits limits;                   // memory and disk the run must fit in (default: the machine's)
 };
 
 // Runs the scene; messages go to `log` (progress, warnings, diagnoses). Returns an ExitCode.

@@ -9,6 +9,11 @@
 namespace rkpm::scene::tables {
 namespace {
 
+// The largest cell count along one direction: the generators hold counts as int, and
+// no cloud that fits a machine comes near it. What a count costs in particles, memory
+// and output is checked before a run from the product (rkpm check, sim/preflight.hpp).
+constexpr double kMaxCells = 1 << 20;
+
 ParamTable variant(std::string name, std::string help) {
   ParamTable t;
   t.section = "body.cloud";
@@ -23,7 +28,7 @@ ParamTable block() {
   t.specs = {
       ParamSpec::vec3("origin", "m").defaults(Vec3::Zero()).help("Corner with the smallest coordinates."),
       ParamSpec::vec3("size", "m").greater_than(0).mark_required().help("Edge lengths along x, y, z."),
-      ParamSpec::int3("cells").at_least(1).mark_required().help("Number of hexahedra along x, y, z."),
+      ParamSpec::int3("cells").at_least(1).at_most(kMaxCells).mark_required().help("Number of hexahedra along x, y, z."),
       ParamSpec::real("jitter", "-").at_least(0).at_most(0.3).defaults(0.0)
           .help("Random offset of interior particles, as a fraction of the spacing (boundary "
                 "particles stay on their faces)."),
@@ -38,7 +43,7 @@ ParamTable sphere() {
   t.specs = {
       ParamSpec::vec3("center", "m").defaults(Vec3::Zero()).help("Centre of the ball."),
       ParamSpec::real("radius", "m").greater_than(0).mark_required().help("Radius of the ball."),
-      ParamSpec::integer("cells").at_least(2).defaults(std::int64_t{16}).help("Hexahedra across a diameter."),
+      ParamSpec::integer("cells").at_least(2).at_most(kMaxCells).defaults(std::int64_t{16}).help("Hexahedra across a diameter."),
   };
   t.surfaces = {"surface"};
   return t;
@@ -52,9 +57,9 @@ ParamTable shell() {
           .help("Semi-axes of the outer surface."),
       ParamSpec::real("thickness", "m").greater_than(0).defaults(0.5e-6)
           .help("Wall thickness: the inner surface has every semi-axis reduced by it."),
-      ParamSpec::integer("face_cells").at_least(2).defaults(std::int64_t{32})
+      ParamSpec::integer("face_cells").at_least(2).at_most(kMaxCells).defaults(std::int64_t{32})
           .help("Cells along each edge of the 6 cubed-sphere faces."),
-      ParamSpec::integer("layers").at_least(2).defaults(std::int64_t{5}).help("Particle layers through the wall."),
+      ParamSpec::integer("layers").at_least(2).at_most(kMaxCells).defaults(std::int64_t{5}).help("Particle layers through the wall."),
   };
   t.surfaces = {"outer", "inner"};
   t.finish = [](ParamSet& p) {

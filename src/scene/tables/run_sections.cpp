@@ -14,6 +14,13 @@ ParamTable scene_section() {
       ParamSpec::text("name").mark_required().help("Short name of the scene; output files are named after it."),
       ParamSpec::text("description").defaults(std::string()).help("Free text describing the scene."),
   };
+  // The name becomes a folder (out/<name>) when --out is not given.
+  t.finish = [](ParamSet& p) {
+    const std::string& name = p.text("name");
+    if (name.empty() || name.find_first_of("/\\") != std::string::npos || name == "." || name == ".." ||
+        name.find_first_not_of(" \t") == std::string::npos)
+      throw p.error("name", "a non-empty name without slashes (it names the output folder out/<name>)");
+  };
   return t;
 }
 

@@ -1,0 +1,88 @@
+// Pre-flight: what a scene will cost, from the scene file alone, before anything large
+// is allocated. `rkpm check` (and `rkpm run --dry-run`) prints it; `rkpm run` refuses a
+// scene whose estimate exceeds the memory it may use, the index range of the arrays or
+// the free space of its output folder, naming the key that sets the size.
+//
+// The counts are exact for the generators (block: (nx+1)(ny+1)(nz+1) particles; sphere:
+// (n+1)^3; shell: layers (6 n^2 + 2)) and read from the file's NumberOfPoints for an
+// imported .vtu. The operator entries are a model of the row lengths: the particles
+// whose support (radius `support` times the longest edge) covers a point, counted in the
+// ball of that radius clipped to the body's extent (docs/performance.md compares it with
+// built operators). Memory is the operators at their set-up peak (rows built as lists,
+// then flattened) plus the per-particle state; a frame is counted uncompressed, an upper
+// bound of what the zlib-compressed .vtu takes.
+#pragma once
+
+#include "rkpm/scene/scene.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rkpm::sim {
+
+struct BodyEstimate {
+  std::string name;
+  std::string generator;
+  std::string size_key;           // the key (with its line) that sets the particle count
+  double particles = 0.0;         // double: a hostile scene may exceed every integer type
+  double elements = 0.0;
+  double gradient_entries = 0.0;  // smoothed-gradient operator entries (SCNI rows)
+  double interpolation_entries = 0.0;
+  double memory_bytes = 0.0;      // peak during set-up and run
+};
+
+struct RunEstimate {
+  std::vector<BodyEstimate> bodies;
+  double particles = 0.0;
+  double memory_bytes = 0.0;
+  double frame_bytes = 0.0;           // one frame, uncompressed
+  std::optional<double> frames;       // frames the run writes; empty when the scene cannot say
+  double checkpoint_bytes = 0.0;
+  double output_bytes = 0.0;          // frames (or the first and last when unknown) + checkpoint
+};
+
+// Limits a run must fit in. Absent: taken from the machine (available memory, cgroup
+// limit and address-space limit; free space of the output folder's file system).
+struct RunLimits {
+  std::optional<double> memory_bytes;
+  std::optional<double> disk_bytes;
+};
+
+// Raised by `check_limits`: the message names the scene file, the key, the estimate
+// and the limit.
+struct PreflightError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+RunEstimate estimate_run(const scene::Scene& scene);
+
+// The memory this process may still use [bytes]: the least of MemAvailable, the cgroup's
+// memory.max minus its usage, and the address-space limit (RLIMIT_AS) less what the
+// process maps already. Empty when none is known.
+std::optional<double> available_memory();
+// Free space of the file system that holds `dir` (or its nearest existing parent).
+std::optional<double> available_disk(const std::filesystem::path& dir);
+
+// Throws PreflightError when the estimate does not fit: more particles or entries than
+// the 32-bit particle index can address, more memory than `limits.memory_bytes` (or the
+// machine's), more output than the free space of `out_dir`.
+void check_limits(const scene::Scene& scene, const RunEstimate& estimate, const RunLimits& limits,
+                  const std::filesystem::path& out_dir);
+
+// The estimate as a short table, with the limits it is checked against.
+void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstimate& estimate,
+                    const RunLimits& limits, const std::filesystem::path& out_dir);
+
+// "1.5 GB", "730 MB": sizes in messages.
+std::string human_bytes(double bytes);
+
+// Parses "8G", "512M", "2e9" for --memory-limit: bytes, with an optional unit K, M, G or
+// T (powers of 1000). Throws std::invalid_argument naming the text.
+double parse_byte_size(const std::string& text);
+
+}  // namespace rkpm::sim

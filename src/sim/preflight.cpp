@@ -1,0 +1,322 @@
+#include "rkpm/sim/preflight.hpp"
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/particles/generators.hpp"
+
+#include <fmt/format.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace rkpm::sim {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Bytes per particle of the run's state beyond the operators: X, d, v, a, x, force
+// (6 x 24), F and P per point (2 x 72), mass, volume, spacing, support radius,
+// stabilization weight and residual, the boundary quadrature's share, the kd-tree, the
+// director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
+// force pass's per-thread buffers. Rounded up.
+constexpr double kStateBytes = 1200.0;
+// Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
+// column and a 24-byte vector, held once in the per-row lists of the build (32 bytes and
+// the lists' spare capacity) and once flattened (28); an interpolation entry is a column and a
+// value (12) with its transpose (8), also built from per-row lists.
+constexpr double kGradientEntryBytes = 80.0;
+constexpr double kInterpolationEntryBytes = 36.0;
+// One frame, uncompressed: the position and 22 point-field components in doubles, the
+// cells (8 connectivity ids, an offset and a type per hexahedron, in 64-bit ids).
+constexpr double kFramePointBytes = 25.0 * 8.0;
+constexpr double kFrameElementBytes = 10.0 * 8.0 + 1.0;
+// What the process holds before any body: the libraries (VTK, OpenMP) and the scene.
+constexpr double kProcessBytes = 30e6;
+// A checkpoint: d, v, a and the director per particle.
+constexpr double kCheckpointBytes = 4.0 * 24.0;
+// The address space a process maps before its arrays (libraries, thread stacks).
+constexpr double kAddressSpaceBaseline = 1.0e9;
+
+// Particles of a support ball of radius r around a point of a cloud with spacings h,
+// clipped along each axis to the body's extent L (a thin wall holds only its layers):
+// (4/3) pi r^3 / (h0 h1 h2), times min(1, (L_i + h_i) / 2r) along each axis.
+double ball_count(double r, const Vec3& h, const Vec3& extent) {
+  double count = 4.0 / 3.0 * kPi * r * r * r / (h[0] * h[1] * h[2]);
+  for (int i = 0; i < 3; ++i) count *= std::min(1.0, (extent[i] + h[i]) / (2.0 * r));
+  return std::max(count, 1.0);
+}
+
+// Spacing and extent in the local axes of a cloud: (h along the three axes, extents).
+struct LocalGrid {
+  Vec3 spacing;
+  Vec3 extent;
+  double longest_edge = 0.0;
+};
+
+// The number of points an imported .vtu declares: NumberOfPoints="N" of its pieces.
+double vtu_points(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(1 << 16, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  double total = 0.0;
+  const std::string key = "NumberOfPoints=\"";
+  for (std::size_t at = head.find(key); at != std::string::npos; at = head.find(key, at + key.size())) {
+    total += std::strtod(head.c_str() + at + key.size(), nullptr);
+  }
+  return total;
+}
+
+std::string key_at(const scene::ParamSet& p, const std::string& key) {
+  return fmt::format("{}:{}: [{}] {}", p.file(), p.line(key), p.section(), key);
+}
+
+BodyEstimate estimate_body(const scene::BodySpec& spec) {
+  BodyEstimate e;
+  e.name = spec.name();
+  e.generator = spec.generator();
+  const auto& c = spec.cloud;
+  LocalGrid grid;
+  if (e.generator == "block") {
+    const auto cells = c.int3("cells");
+    const Vec3 size = c.vec3("size");
+    e.particles = 1.0;
+    e.elements = 1.0;
+    for (int i = 0; i < 3; ++i) {
+      const auto n = static_cast<double>(cells[static_cast<std::size_t>(i)]);
+      e.particles *= n + 1.0;
+      e.elements *= n;
+      grid.spacing[i] = size[i] / n;
+      grid.extent[i] = size[i];
+    }
+    grid.longest_edge = grid.spacing.maxCoeff();
+    e.size_key = key_at(c, "cells");
+  } else if (e.generator == "sphere") {
+    const auto n = static_cast<double>(c.integer("cells"));
+    const double d = 2.0 * c.real("radius");
+    e.particles = (n + 1.0) * (n + 1.0) * (n + 1.0);
+    e.elements = n * n * n;
+    grid.spacing = Vec3::Constant(d / n);
+    grid.extent = Vec3::Constant(d);
+    // The cube-to-ball map stretches the cells near the cube's corners.
+    grid.longest_edge = 1.2 * d / n;
+    e.size_key = key_at(c, "cells");
+  } else if (e.generator == "shell") {
+    const auto n = static_cast<double>(c.integer("face_cells"));
+    const auto layers = static_cast<double>(c.integer("layers"));
+    const Vec3 semi = c.vec3("semi_axes");
+    const double thickness = c.real("thickness");
+    const double per_layer = 6.0 * n * n + 2.0;
+    e.particles = layers * per_layer;
+    e.elements = 6.0 * n * n * (layers - 1.0);
+    const double area = particles::ellipsoid_area(semi);
+    const double in_plane = std::sqrt(area / per_layer);
+    const double through = thickness / std::max(layers - 1.0, 1.0);
+    grid.spacing = Vec3(in_plane, in_plane, through);
+    grid.extent = Vec3(2.0 * semi.maxCoeff(), 2.0 * semi.maxCoeff(), thickness);
+    // The cubed sphere's edges near its cube corners are the longest.
+    grid.longest_edge = std::max(1.4 * in_plane, through);
+    e.size_key = fmt::format("{} and layers", key_at(c, "face_cells"));
+  } else {
+    // An imported mesh: its declared points; its spacing is unknown here, so the rows
+    // are taken as those of a uniform cloud (support^3 (4/3) pi particles).
+    e.particles = vtu_points(spec.cloud_file);
+    e.elements = e.particles;
+    grid.spacing = Vec3::Ones();
+    grid.extent = Vec3::Constant(std::numeric_limits<double>::infinity());
+    grid.longest_edge = 1.0;
+    e.size_key = fmt::format("{} (\"{}\")", key_at(c, "file"), spec.cloud_file);
+  }
+  const double support = spec.rk.real("support") * grid.longest_edge;
+  e.interpolation_entries = e.particles * ball_count(support, grid.spacing, grid.extent);
+  // A smoothing cell's facets reach half a spacing beyond its particle.
+  const bool scni = spec.rk.choice("integration") == "scni";
+  const double cell_reach = scni ? 0.5 * grid.longest_edge : 0.0;
+  e.gradient_entries = e.particles * ball_count(support + cell_reach, grid.spacing, grid.extent);
+  e.memory_bytes = e.particles * kStateBytes + e.gradient_entries * kGradientEntryBytes +
+                   e.interpolation_entries * kInterpolationEntryBytes;
+  return e;
+}
+
+std::optional<double> read_number_file(const std::string& path) {
+  std::ifstream in(path);
+  std::string text;
+  if (!(in >> text) || text == "max") return std::nullopt;
+  try {
+    return std::stod(text);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::optional<double> proc_status_kb(const std::string& file, const std::string& key) {
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(key, 0) != 0) continue;
+    std::istringstream fields(line.substr(key.size()));
+    double kb = 0.0;
+    if (fields >> kb) return kb * 1024.0;
+  }
+  return std::nullopt;
+}
+
+std::optional<double> least(std::optional<double> a, std::optional<double> b) {
+  if (!a) return b;
+  if (!b) return a;
+  return std::min(*a, *b);
+}
+
+}  // namespace
+
+RunEstimate estimate_run(const scene::Scene& scene) {
+  RunEstimate r;
+  double points = 0.0, elements = 0.0;
+  for (const auto& spec : scene.bodies) {
+    r.bodies.push_back(estimate_body(spec));
+    r.particles += r.bodies.back().particles;
+    r.memory_bytes += r.bodies.back().memory_bytes;
+    points += r.bodies.back().particles;
+    elements += r.bodies.back().elements;
+  }
+  r.memory_bytes += kProcessBytes;
+  r.frame_bytes = points * kFramePointBytes + elements * kFrameElementBytes;
+  r.checkpoint_bytes = scene.output.integer("checkpoint_every") > 0 ? points * kCheckpointBytes : 0.0;
+  const auto& integrator = scene.integrator;
+  if (integrator.has("t_end")) {
+    const double t_end = integrator.real("t_end");
+    const double every = scene.output.has("every") ? scene.output.real("every") : t_end / 50.0;
+    // The first frame, one per `every`, and the last; at most one per step.
+    r.frames = std::min(std::floor(t_end / every) + 2.0, static_cast<double>(integrator.integer("max_steps")) + 2.0);
+  } else if (!scene.output.has("every")) {
+    r.frames = 2.0;  // relaxing without t_end or every: the start and the end
+  }
+  r.output_bytes = r.frame_bytes * (r.frames ? *r.frames : 2.0) + r.checkpoint_bytes;
+  return r;
+}
+
+std::optional<double> available_memory() {
+  std::optional<double> limit = proc_status_kb("/proc/meminfo", "MemAvailable:");
+  if (const auto max = read_number_file("/sys/fs/cgroup/memory.max")) {
+    const double used = read_number_file("/sys/fs/cgroup/memory.current").value_or(0.0);
+    limit = least(limit, *max - used);
+  }
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    const double mapped = proc_status_kb("/proc/self/status", "VmSize:").value_or(kAddressSpaceBaseline);
+    limit = least(limit, static_cast<double>(as.rlim_cur) - std::max(mapped, kAddressSpaceBaseline));
+  }
+  return limit;
+}
+
+std::optional<double> available_disk(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(dir, ec);
+  if (ec) return std::nullopt;
+  while (!p.empty() && !std::filesystem::exists(p, ec)) {
+    if (p == p.parent_path()) break;
+    p = p.parent_path();
+  }
+  const auto space = std::filesystem::space(p, ec);
+  if (ec) return std::nullopt;
+  return static_cast<double>(space.available);
+}
+
+void check_limits(const scene::Scene& scene, const RunEstimate& estimate, const RunLimits& limits,
+                  const std::filesystem::path& out_dir) {
+  constexpr double kIndexLimit = static_cast<double>(std::numeric_limits<Index>::max());
+  for (const auto& b : estimate.bodies) {
+    if (b.particles > kIndexLimit)
+      throw PreflightError(fmt::format(
+          "{}: body '{}' would have {:.4g} particles, more than the {} a 32-bit particle index can address; "
+          "expected a count below that (a coarser cloud)",
+          b.size_key, b.name, b.particles, std::numeric_limits<Index>::max()));
+    if (b.gradient_entries > kIndexLimit)
+      throw PreflightError(fmt::format(
+          "{}: body '{}' would have about {:.3g} operator entries ({:.4g} particles), more than the {} a 32-bit "
+          "index can address; expected a coarser cloud or a smaller [body.rk] support",
+          b.size_key, b.name, b.gradient_entries, b.particles, std::numeric_limits<Index>::max()));
+  }
+  const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
+  if (memory && estimate.memory_bytes > *memory) {
+    const auto largest = std::max_element(estimate.bodies.begin(), estimate.bodies.end(),
+                                          [](const auto& a, const auto& b) { return a.memory_bytes < b.memory_bytes; });
+    throw PreflightError(fmt::format(
+        "{}: the run needs about {} of memory ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
+        "expected a coarser cloud{}",
+        largest->size_key, human_bytes(estimate.memory_bytes), estimate.particles, largest->name,
+        human_bytes(largest->memory_bytes), human_bytes(*memory),
+        limits.memory_bytes ? "given by --memory-limit" : "available to this process",
+        limits.memory_bytes ? " or a larger --memory-limit" : ""));
+  }
+  const auto disk = limits.disk_bytes ? limits.disk_bytes : available_disk(out_dir);
+  if (disk && estimate.output_bytes > *disk) {
+    const std::string frames = estimate.frames ? fmt::format("{:.0f} frames", *estimate.frames) : "the first and last frames";
+    throw PreflightError(fmt::format(
+        "{}:{}: [output] every: {} of about {} each (uncompressed) need up to {}, more than the {} free in {}; "
+        "expected fewer frames (a larger `every`), a coarser cloud or another --out folder",
+        scene.output.file(), scene.output.line("every"), frames, human_bytes(estimate.frame_bytes),
+        human_bytes(estimate.output_bytes), human_bytes(*disk), out_dir.string()));
+  }
+}
+
+void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstimate& estimate,
+                    const RunLimits& limits, const std::filesystem::path& out_dir) {
+  out << fmt::format("scene {} ({})\n", scene.scene.text("name"), scene.file);
+  out << fmt::format("{:<16} {:<10} {:>12} {:>16} {:>12}\n", "body", "cloud", "particles", "operator entries",
+                     "memory");
+  for (const auto& b : estimate.bodies)
+    out << fmt::format("{:<16} {:<10} {:>12.0f} {:>16.3g} {:>12}\n", b.name, b.generator, b.particles,
+                       b.gradient_entries + b.interpolation_entries, human_bytes(b.memory_bytes));
+  out << fmt::format("run: {:.0f} particles, about {} of memory", estimate.particles,
+                     human_bytes(estimate.memory_bytes));
+  const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
+  out << (memory ? fmt::format(" (limit {})\n", human_bytes(*memory)) : std::string(" (limit unknown)\n"));
+  out << fmt::format("output: {} per frame (uncompressed), {}; up to {}", human_bytes(estimate.frame_bytes),
+                     estimate.frames ? fmt::format("{:.0f} frames", *estimate.frames)
+                                     : std::string("frames until convergence"),
+                     human_bytes(estimate.output_bytes));
+  const auto disk = limits.disk_bytes ? limits.disk_bytes : available_disk(out_dir);
+  out << (disk ? fmt::format(" ({} free in {})\n", human_bytes(*disk), out_dir.string()) : std::string("\n"));
+}
+
+std::string human_bytes(double bytes) {
+  const char* units[] = {"B", "KB", "MB", "GB", "TB", "PB"};
+  int u = 0;
+  while (std::abs(bytes) >= 1000.0 && u < 5) {
+    bytes /= 1000.0;
+    ++u;
+  }
+  if (u == 5 && std::abs(bytes) >= 1000.0) return fmt::format("{:.3g} PB", bytes);
+  return fmt::format(u == 0 ? "{:.0f} {}" : "{:.3g} {}", bytes, units[u]);
+}
+
+double parse_byte_size(const std::string& text) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  const std::string unit = text.substr(used);
+  double scale = 0.0;
+  if (unit.empty() || unit == "B") scale = 1.0;
+  else if (unit == "K" || unit == "KB") scale = 1e3;
+  else if (unit == "M" || unit == "MB") scale = 1e6;
+  else if (unit == "G" || unit == "GB") scale = 1e9;
+  else if (unit == "T" || unit == "TB") scale = 1e12;
+  if (used == 0 || scale == 0.0 || !(value > 0.0) || !std::isfinite(value))
+    throw std::invalid_argument(fmt::format("--memory-limit {}: expected a positive size in bytes, "
+                                            "optionally with a unit K, M, G or T (powers of 1000), e.g. 8G",
+                                            text));
+  return value * scale;
+}
+
+}  // namespace rkpm::sim

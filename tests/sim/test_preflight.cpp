@@ -1,0 +1,194 @@
+// The pre-flight estimate (sim/preflight.hpp): exact particle counts for the
+// generators, operator entries close to those of the built operators, refusals that
+// name the key, the estimate and the limit, and no allocation before refusing.
+#include "sim_fixtures.hpp"
+
+#include "rkpm/particles/generators.hpp"
+#include "rkpm/sim/preflight.hpp"
+#include "rkpm/sim/run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace rkpm::sim {
+namespace {
+
+std::string scene_with_cloud(const std::string& cloud, const std::string& extra = "") {
+  return R"([scene]
+name = "preflight"
+[integrator]
+mode = "relax"
+[[body]]
+name = "body"
+density = 1000
+[body.cloud]
+)" + cloud + R"(
+[body.material]
+model = "mooney_rivlin"
+c1 = 400
+lambda = 2000
+)" + extra;
+}
+
+const std::string kBlock = "generator = \"block\"\nsize = [2, 1, 0.5]\ncells = [12, 6, 3]";
+const std::string kSphere = "generator = \"sphere\"\nradius = 1\ncells = 10";
+const std::string kShell = "generator = \"shell\"\nsemi_axes = [5e-6, 5e-6, 1.5e-6]\nthickness = 0.5e-6\nface_cells = 12\nlayers = 5";
+
+struct Built {
+  double particles, gradient_entries, interpolation_entries;
+};
+
+Built built(const std::string& cloud) {
+  const auto w = testing::build_from_text(scene_with_cloud(cloud));
+  const Body& b = *w.world->bodies[0];
+  return {static_cast<double>(b.size()), static_cast<double>(b.gradient.col.size()),
+          static_cast<double>(b.interpolation.col.size())};
+}
+
+void expect_close_to_built(const std::string& cloud, double tolerance) {
+  const auto scene = scene::parse_scene(scene_with_cloud(cloud), "test.toml");
+  const RunEstimate e = estimate_run(scene);
+  const Built b = built(cloud);
+  ASSERT_EQ(e.bodies.size(), 1u);
+  EXPECT_EQ(e.bodies[0].particles, b.particles) << cloud;  // exact
+  const double grad = e.bodies[0].gradient_entries / b.gradient_entries;
+  const double interp = e.bodies[0].interpolation_entries / b.interpolation_entries;
+  std::cout << "[ model/built ] gradient " << grad << ", interpolation " << interp << " for\n" << cloud << "\n";
+  EXPECT_GT(grad, 1.0 / tolerance) << cloud;
+  EXPECT_LT(grad, tolerance) << cloud;
+  EXPECT_GT(interp, 1.0 / tolerance) << cloud;
+  EXPECT_LT(interp, tolerance) << cloud;
+}
+
+TEST(Preflight, CountsAreExactAndEntriesFollowTheBuiltOperators) {
+  expect_close_to_built(kBlock, 1.6);
+  expect_close_to_built(kSphere, 1.6);
+  expect_close_to_built(kShell, 1.6);
+}
+
+// Runs `text` through run_scene into a fresh folder: the exit code, the log, and
+// whether the output folder was created.
+struct Outcome {
+  int code;
+  std::string log;
+  bool wrote;
+};
+Outcome run_text(const std::string& text, RunLimits limits = {}) {
+  const auto dir = testing::fresh_dir("preflight");
+  const auto scene = scene::parse_scene(text, "bomb.toml");
+  RunOptions options;
+  options.out_dir = dir / "out";
+  options.quiet = true;
+  options.limits = limits;
+  std::ostringstream log;
+  const int code = run_scene(scene, options, log);
+  return {code, log.str(), std::filesystem::exists(options.out_dir)};
+}
+
+TEST(Preflight, BlockBombIsRefusedByItsKeyBeforeAnythingIsAllocated) {
+  const auto r = run_text(scene_with_cloud("generator = \"block\"\nsize = [1, 1, 1]\ncells = [5000, 5000, 5000]"));
+  EXPECT_EQ(r.code, kBadInput);
+  EXPECT_NE(r.log.find("bomb.toml:"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("[body.cloud] cells"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("1.251e+11 particles"), std::string::npos) << r.log;  // 5001^3
+  EXPECT_NE(r.log.find("32-bit"), std::string::npos) << r.log;
+  EXPECT_FALSE(r.wrote);
+}
+
+TEST(Preflight, ShellBombsAreRefusedByTheirKeys) {
+  const auto wide = run_text(scene_with_cloud("generator = \"shell\"\nface_cells = 100000"));
+  EXPECT_EQ(wide.code, kBadInput);
+  EXPECT_NE(wide.log.find("face_cells and layers"), std::string::npos) << wide.log;
+  const auto deep = run_text(scene_with_cloud("generator = \"shell\"\nlayers = 1000000"));
+  EXPECT_EQ(deep.code, kBadInput);
+  EXPECT_NE(deep.log.find("6.146e+09 particles"), std::string::npos) << deep.log;  // 1e6 (6 32^2 + 2)
+}
+
+TEST(Preflight, MemoryLimitNamesEstimateAndLimit) {
+  RunLimits limits;
+  limits.memory_bytes = 1e6;
+  const auto r = run_text(scene_with_cloud(kBlock), limits);
+  EXPECT_EQ(r.code, kBadInput);
+  EXPECT_NE(r.log.find("[body.cloud] cells"), std::string::npos) << r.log;
+  EXPECT_NE(r.log.find("more than the 1 MB given by --memory-limit"), std::string::npos) << r.log;
+  EXPECT_FALSE(r.wrote);
+  limits.memory_bytes = 1e9;  // the same scene fits in 1 GB
+  EXPECT_NO_THROW(check_limits(scene::parse_scene(scene_with_cloud(kBlock), "t.toml"),
+                               estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits, "."));
+}
+
+TEST(Preflight, OutputLargerThanTheFreeSpaceIsRefusedByEvery) {
+  const std::string dynamic = R"([scene]
+name = "frames"
+[integrator]
+t_end = 1.0
+[output]
+every = 0.001
+[[body]]
+name = "body"
+density = 1000
+[body.cloud]
+)" + kBlock + R"(
+[body.material]
+model = "mooney_rivlin"
+c1 = 400
+lambda = 2000
+)";
+  const auto scene = scene::parse_scene(dynamic, "frames.toml");
+  const RunEstimate e = estimate_run(scene);
+  ASSERT_TRUE(e.frames.has_value());
+  EXPECT_EQ(*e.frames, 1002.0);  // the first, one per `every`, the last
+  const double points = 13.0 * 7.0 * 4.0, cells = 12.0 * 6.0 * 3.0;
+  EXPECT_DOUBLE_EQ(e.frame_bytes, points * 200.0 + cells * 81.0);
+  RunLimits limits;
+  limits.disk_bytes = 0.5 * e.output_bytes;
+  try {
+    check_limits(scene, e, limits, "out");
+    FAIL() << "not refused";
+  } catch (const PreflightError& error) {
+    const std::string what = error.what();
+    EXPECT_NE(what.find("frames.toml:6: [output] every"), std::string::npos) << what;
+    EXPECT_NE(what.find("1002 frames"), std::string::npos) << what;
+  }
+  limits.disk_bytes = 2.0 * e.output_bytes;
+  EXPECT_NO_THROW(check_limits(scene, e, limits, "out"));
+}
+
+TEST(Preflight, GeneratorsCheckTheirCountsInSixtyFourBits) {
+  particles::BlockSpec block;
+  block.cells = {5000, 5000, 5000};
+  EXPECT_THROW(particles::make_block(block), particles::CloudError);
+  particles::ShellSpec shell;
+  shell.face_cells = 100000;
+  EXPECT_THROW(particles::make_shell(shell), particles::CloudError);
+  particles::SphereSpec sphere;
+  sphere.cells = 2000;
+  EXPECT_THROW(particles::make_sphere(sphere), particles::CloudError);
+}
+
+TEST(Preflight, ByteSizes) {
+  EXPECT_EQ(parse_byte_size("8G"), 8e9);
+  EXPECT_EQ(parse_byte_size("512M"), 512e6);
+  EXPECT_EQ(parse_byte_size("2e9"), 2e9);
+  EXPECT_EQ(parse_byte_size("1.5KB"), 1500.0);
+  EXPECT_THROW(parse_byte_size("lots"), std::invalid_argument);
+  EXPECT_THROW(parse_byte_size("-1G"), std::invalid_argument);
+  EXPECT_THROW(parse_byte_size("8Q"), std::invalid_argument);
+  EXPECT_EQ(human_bytes(1.5e9), "1.5 GB");
+}
+
+TEST(Preflight, EmptySceneNameIsRefused) {
+  try {
+    scene::parse_scene("[scene]\nname = \"\"\n[integrator]\nmode = \"relax\"\n", "noname.toml");
+    FAIL() << "accepted";
+  } catch (const scene::SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("noname.toml:2: [scene] name"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(scene::parse_scene("[scene]\nname = \"../up\"\n[integrator]\nmode = \"relax\"\n", "t.toml"),
+               scene::SceneError);
+}
+
+}  // namespace
+}  // namespace rkpm::sim
