@@ -105,7 +105,10 @@ int main(int argc, char** argv) {
     const auto estimate = rkpm::sim::estimate_run(scene);
     rkpm::sim::print_estimate(std::cout, scene, estimate, options.limits, options.out_dir);
     try {
-      rkpm::sim::check_limits(scene, estimate, options.limits, options.out_dir);
+      // Without a set-up the step is unknown: the disk must hold at least the first and last frames.
+      rkpm::sim::check_memory(estimate, options.limits);
+      rkpm::sim::check_disk(scene, estimate, rkpm::sim::frames_expected(scene, estimate, std::nullopt), options.limits,
+                            options.out_dir);
     } catch (const rkpm::sim::PreflightError& e) {
       std::cerr << "error: " << e.what() << "\n";
       return rkpm::sim::kBadInput;

@@ -90,8 +90,12 @@ void write_vtu(const std::filesystem::path& path, const Frame& frame) {
   writer->SetCompressorTypeToZLib();
   writer->SetHeaderTypeToUInt64();  // frames of more than 4 GiB stay writable
   // Write() can return 1 even when the file could not be opened: the error
-  // code is the reliable signal.
+  // code is the reliable signal. VTK's own report of a failed write (a coloured dump of
+  // the pipeline request) is held back: the error below says what failed, once.
+  const bool vtk_reports = vtkObject::GetGlobalWarningDisplay() != 0;
+  vtkObject::GlobalWarningDisplayOff();
   const int ok = writer->Write();
+  vtkObject::SetGlobalWarningDisplay(vtk_reports ? 1 : 0);
   if (ok != 1 || writer->GetErrorCode() != vtkErrorCode::NoError) {
     throw std::runtime_error(fmt::format("VTK failed to write '{}': {}", path.string(),
                                          describe_write_error(writer->GetErrorCode())));

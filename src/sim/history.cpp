@@ -1,8 +1,12 @@
 #include "rkpm/sim/history.hpp"
 
+#include "rkpm/io/atomic_file.hpp"
 #include "rkpm/io/json.hpp"
 
 #include <fmt/format.h>
+
+#include <cstdlib>
+#include <iterator>
 
 namespace rkpm::sim {
 
@@ -15,9 +19,32 @@ std::vector<Vec3> physical_positions(const Body& body) {
 }
 }  // namespace
 
+namespace {
+// Resuming at `step`: keep the header and the rows of steps up to it. A run killed after
+// its checkpoint has written rows the resumed run writes again, and perhaps half a row.
+void keep_rows_up_to(const std::filesystem::path& path, std::int64_t step) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(fmt::format("cannot resume '{}': it cannot be read", path.string()));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string kept;
+  std::size_t start = 0;
+  for (bool header = true; start < text.size(); header = false) {
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) break;  // a row cut short by the kill
+    const std::string row = text.substr(start, end + 1 - start);
+    start = end + 1;
+    if (!header && std::strtoll(row.c_str(), nullptr, 10) > step) break;
+    kept += row;
+  }
+  io::write_text_atomically(path, kept);
+}
+}  // namespace
+
 History::History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume)
-    : out_(path, resume ? std::ios::app : std::ios::trunc), shape_body_(shape_body) {
-  if (!out_) throw std::runtime_error("cannot write " + path.string());
+    : path_(path), shape_body_(shape_body) {
+  if (resume) keep_rows_up_to(path, world.step);
+  out_.open(path, resume ? std::ios::app : std::ios::trunc);
+  if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
   if (resume) return;
   out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,director_work,dissipated,energy_error,residual,"
           "min_J";
@@ -46,6 +73,7 @@ void History::record(const World& world, Integrator& integrator) {
   }
   out_ << "\n";
   out_.flush();
+  if (!out_) throw std::runtime_error(fmt::format("failed writing '{}' (disk full?)", path_.string()));
 }
 
 ShapeReport final_shape(const Body& body) { return measure_shape(body.cloud, physical_positions(body), "outer"); }

@@ -228,8 +228,7 @@ std::optional<double> available_disk(const std::filesystem::path& dir) {
   return static_cast<double>(space.available);
 }
 
-void check_limits(const scene::Scene& scene, const RunEstimate& estimate, const RunLimits& limits,
-                  const std::filesystem::path& out_dir) {
+void check_memory(const RunEstimate& estimate, const RunLimits& limits) {
   constexpr double kIndexLimit = static_cast<double>(std::numeric_limits<Index>::max());
   for (const auto& b : estimate.bodies) {
     if (b.particles > kIndexLimit)
@@ -255,14 +254,27 @@ void check_limits(const scene::Scene& scene, const RunEstimate& estimate, const 
         limits.memory_bytes ? "given by --memory-limit" : "available to this process",
         limits.memory_bytes ? " or a larger --memory-limit" : ""));
   }
+}
+
+double frames_expected(const scene::Scene& scene, const RunEstimate& estimate, std::optional<double> dt,
+                       std::int64_t step_limit) {
+  const bool dynamic = scene.integrator.choice("mode") == "dynamic";
+  if (!dynamic || !dt || !(*dt > 0.0) || !estimate.frames) return 2.0;
+  double steps = std::ceil(scene.integrator.real("t_end") / *dt);
+  if (step_limit > 0) steps = std::min(steps, static_cast<double>(step_limit));
+  return std::min(*estimate.frames, steps + 2.0);
+}
+
+void check_disk(const scene::Scene& scene, const RunEstimate& estimate, double frames, const RunLimits& limits,
+                const std::filesystem::path& out_dir) {
+  const double bytes = frames * estimate.frame_bytes + estimate.checkpoint_bytes;
   const auto disk = limits.disk_bytes ? limits.disk_bytes : available_disk(out_dir);
-  if (disk && estimate.output_bytes > *disk) {
-    const std::string frames = estimate.frames ? fmt::format("{:.0f} frames", *estimate.frames) : "the first and last frames";
+  if (disk && bytes > *disk) {
     throw PreflightError(fmt::format(
-        "{}:{}: [output] every: {} of about {} each (uncompressed) need up to {}, more than the {} free in {}; "
-        "expected fewer frames (a larger `every`), a coarser cloud or another --out folder",
+        "{}:{}: [output] every: {:.0f} frames of about {} each (uncompressed) need up to {}, more than the {} free "
+        "in {}; expected fewer frames (a larger `every`), a coarser cloud or another --out folder",
         scene.output.file(), scene.output.line("every"), frames, human_bytes(estimate.frame_bytes),
-        human_bytes(estimate.output_bytes), human_bytes(*disk), out_dir.string()));
+        human_bytes(bytes), human_bytes(*disk), out_dir.string()));
   }
 }
 
@@ -279,7 +291,7 @@ void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstim
   const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
   out << (memory ? fmt::format(" (limit {})\n", human_bytes(*memory)) : std::string(" (limit unknown)\n"));
   out << fmt::format("output: {} per frame (uncompressed), {}; up to {}", human_bytes(estimate.frame_bytes),
-                     estimate.frames ? fmt::format("{:.0f} frames", *estimate.frames)
+                     estimate.frames ? fmt::format("at most {:.0f} frames", *estimate.frames)
                                      : std::string("frames until convergence"),
                      human_bytes(estimate.output_bytes));
   const auto disk = limits.disk_bytes ? limits.disk_bytes : available_disk(out_dir);

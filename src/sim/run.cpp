@@ -22,6 +22,24 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A write of the run's output failed (the folder, a frame, history.csv, a checkpoint).
+struct OutputFailed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Runs `write`, reporting any failure of it as OutputFailed; a non-finite value found in
+// a frame's data is the simulation's failure, not the disk's, and passes through.
+template <class Write>
+void guarded_output(Write&& write) {
+  try {
+    write();
+  } catch (const io::NonFiniteValue&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw OutputFailed(e.what());
+  }
+}
+
 io::Json energy_json(const EnergyLedger& e) {
   io::Json j = io::Json::object();
   j.set("kinetic", e.kinetic);
@@ -44,8 +62,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
 
   // Everything that can fail on user input happens before the output directory exists,
   // and what the scene will cost is checked before anything large is allocated.
+  const RunEstimate estimate = estimate_run(scene);
   try {
-    check_limits(scene, estimate_run(scene), options.limits, options.out_dir);
+    check_memory(estimate, options.limits);
   } catch (const PreflightError& e) {
     log << "error: " << e.what() << "\n";
     return kBadInput;
@@ -78,11 +97,26 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       return kBadInput;
     }
   }
-  std::filesystem::create_directories(options.out_dir);
+  // The step is known once the integrator has started: the frames a dynamic run writes
+  // must fit the output folder before the first is written.
+  integrator.initialize();
+  try {
+    check_disk(scene, estimate, frames_expected(scene, estimate, integrator.dt(), options.max_steps_override),
+               options.limits, options.out_dir);
+  } catch (const PreflightError& e) {
+    log << "error: " << e.what() << "\n";
+    return kBadInput;
+  }
+  try {
+    std::filesystem::create_directories(options.out_dir);
+  } catch (const std::filesystem::filesystem_error& e) {
+    log << fmt::format("error: cannot create the output folder '{}': {}\n", options.out_dir.string(),
+                       e.code().message());
+    return kOutputFailed;
+  }
   const auto checkpoint_path = options.out_dir / "checkpoint.bin";
   RunClock clock;
   std::optional<io::PvdSeries> series;
-  integrator.initialize();
   if (!options.restart.empty()) {
     try {
       read_checkpoint(options.restart, *world, integrator, clock, digest);
@@ -92,29 +126,42 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       return kBadInput;
     }
   } else {
-    series.emplace(options.out_dir, "frames");
+    try {
+      series.emplace(options.out_dir, "frames");
+    } catch (const std::exception& e) {
+      log << fmt::format("error: cannot write the output folder '{}': {}\n", options.out_dir.string(), e.what());
+      return kOutputFailed;
+    }
   }
   if (integrator.dt_clamped())
     log << fmt::format("warning: [integrator] dt = {:.3g} s exceeds the stable step {:.3g} s; using {:.3g} s\n",
                        settings.dt, integrator.stable_dt(), integrator.dt());
 
-  History history(options.out_dir / "history.csv", *world, shape_body, !options.restart.empty());
+  std::optional<History> history;
+  try {
+    history.emplace(options.out_dir / "history.csv", *world, shape_body, !options.restart.empty());
+  } catch (const std::exception& e) {
+    log << "error: " << e.what() << "\n";
+    return kOutputFailed;
+  }
 
   std::vector<Vec3> positions;
   auto write_frame = [&] {
-    series->write(world->time, make_frame(*world, cells, positions));
-    history.record(*world, integrator);
+    guarded_output([&] {
+      series->write(world->time, make_frame(*world, cells, positions));
+      history->record(*world, integrator);
+    });
     ++clock.frames;
   };
-  if (options.restart.empty()) {
-    write_frame();
-    clock.next_output = every;
-  }
 
   io::Progress progress(log, !options.quiet && io::stderr_is_terminal());
   std::string status = "completed", diagnosis;
   int code = kSuccess;
   try {
+    if (options.restart.empty()) {
+      write_frame();
+      clock.next_output = every;
+    }
     while (true) {
       const bool time_is_up = world->time >= t_end * (1.0 - 1e-12);
       if (relax ? (world->step > 0 && integrator.converged()) : time_is_up) break;
@@ -133,7 +180,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
         clock.next_output += every;
       }
       if (checkpoint_every > 0 && world->step % checkpoint_every == 0)
-        write_checkpoint(checkpoint_path, *world, integrator, clock, digest);
+        guarded_output([&] { write_checkpoint(checkpoint_path, *world, integrator, clock, digest); });
       if (!options.quiet)
         progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
                         relax ? fmt::format("residual {:.2e} (target {:.0e})", integrator.residual(),
@@ -150,6 +197,11 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     status = "unstable";
     diagnosis = std::string("a non-finite value reached the output: ") + e.what();
     code = kUnstable;
+  } catch (const OutputFailed& e) {
+    status = "output failed";
+    diagnosis = fmt::format("writing the output failed at step {} (t = {:.6g} s): {}", world->step, world->time,
+                            e.what());
+    code = kOutputFailed;
   }
   if (!options.quiet) progress.finish();
 
@@ -166,7 +218,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
   json.set("pvd", series->pvd_path().string());
-  if (code != kUnstable) {
+  if (code != kUnstable && code != kOutputFailed) {
     json.set("energy", energy_json(integrator.measure_energy()));
     json.set("min_J", integrator.min_J());
     if (relax) {
@@ -179,9 +231,19 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   } else {
     json.set("diagnosis", diagnosis);
     log << "error: " << diagnosis << "\n";
-    log << fmt::format("the last good frame is kept in {}\n", series->pvd_path().string());
+    log << fmt::format(code == kUnstable ? "the last good frame is kept in {}" : "the frames listed in {} are complete",
+                       series->pvd_path().string());
+    if (code == kOutputFailed && checkpoint_every > 0 && std::filesystem::exists(checkpoint_path))
+      log << fmt::format("; {} can resume the run (--restart)", checkpoint_path.string());
+    log << "\n";
   }
-  io::write_json_atomically(options.out_dir / "summary.json", json);
+  try {
+    io::write_json_atomically(options.out_dir / "summary.json", json);
+  } catch (const std::exception& e) {
+    // The run's own verdict stands; a summary that cannot be written is reported beside it.
+    log << "error: cannot write summary.json: " << e.what() << "\n";
+    if (code == kSuccess || code == kIncomplete) code = kOutputFailed;
+  }
   if (code == kSuccess || code == kIncomplete)
     log << fmt::format("{} after {} steps, t = {:.6g} s, {:.1f} s wall. ParaView: {}\n", status, world->step,
                        world->time, summary.wall_time, series->pvd_path().string());

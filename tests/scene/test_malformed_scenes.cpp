@@ -56,7 +56,7 @@ std::vector<Malformed> malformed_scenes() {
       {"string where a real is expected", replaced(kBase, "t_end = 1.0", "t_end = \"long\""),
        "bad.toml:4: [integrator] t_end = \"long\": expected a real > 0 [s]"},
       {"real where an integer is expected", replaced(kBase, "cells = [2, 2, 2]", "cells = [2, 2.5, 2]"),
-       "bad.toml:10: [body.cloud] cells = [2, 2.5, 2]: expected an array of 3 integers, each >= 1"},
+       "bad.toml:10: [body.cloud] cells = [2, 2.5, 2]: expected an array of 3 integers, each in [1, 1048576]"},
       {"vec3 with two components", replaced(kBase, "size = [1, 1, 1]", "size = [1, 1]"),
        "bad.toml:9: [body.cloud] size = [1, 1]: expected an array of 3 reals, each > 0 [m]"},
       {"string where a boolean is expected", kBase + kLceBody + "[body.director]\nevolve = \"yes\"\n",

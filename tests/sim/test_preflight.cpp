@@ -115,8 +115,7 @@ TEST(Preflight, MemoryLimitNamesEstimateAndLimit) {
   EXPECT_NE(r.log.find("more than the 1 MB given by --memory-limit"), std::string::npos) << r.log;
   EXPECT_FALSE(r.wrote);
   limits.memory_bytes = 1e9;  // the same scene fits in 1 GB
-  EXPECT_NO_THROW(check_limits(scene::parse_scene(scene_with_cloud(kBlock), "t.toml"),
-                               estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits, "."));
+  EXPECT_NO_THROW(check_memory(estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits));
 }
 
 TEST(Preflight, OutputLargerThanTheFreeSpaceIsRefusedByEvery) {
@@ -142,18 +141,22 @@ lambda = 2000
   EXPECT_EQ(*e.frames, 1002.0);  // the first, one per `every`, the last
   const double points = 13.0 * 7.0 * 4.0, cells = 12.0 * 6.0 * 3.0;
   EXPECT_DOUBLE_EQ(e.frame_bytes, points * 200.0 + cells * 81.0);
+  // With a step of 0.01 s the run takes 100 steps: 102 frames, not 1002.
+  EXPECT_EQ(frames_expected(scene, e, 0.01), 102.0);
+  EXPECT_EQ(frames_expected(scene, e, 1e-5), 1002.0);
+  EXPECT_EQ(frames_expected(scene, e, std::nullopt), 2.0);  // step unknown: the first and last
+  EXPECT_EQ(frames_expected(scene, e, 1e-5, 40), 42.0);     // --max-steps 40
   RunLimits limits;
-  limits.disk_bytes = 0.5 * e.output_bytes;
+  limits.disk_bytes = 50.0 * e.frame_bytes;
   try {
-    check_limits(scene, e, limits, "out");
+    check_disk(scene, e, 102.0, limits, "out");
     FAIL() << "not refused";
   } catch (const PreflightError& error) {
     const std::string what = error.what();
     EXPECT_NE(what.find("frames.toml:6: [output] every"), std::string::npos) << what;
-    EXPECT_NE(what.find("1002 frames"), std::string::npos) << what;
+    EXPECT_NE(what.find("102 frames"), std::string::npos) << what;
   }
-  limits.disk_bytes = 2.0 * e.output_bytes;
-  EXPECT_NO_THROW(check_limits(scene, e, limits, "out"));
+  EXPECT_NO_THROW(check_disk(scene, e, 2.0, limits, "out"));
 }
 
 TEST(Preflight, GeneratorsCheckTheirCountsInSixtyFourBits) {

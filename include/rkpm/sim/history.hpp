@@ -20,11 +20,13 @@ namespace rkpm::sim {
 
 class History {
  public:
-  // `shape_body` may be null. Appends to an existing file when resuming.
+  // `shape_body` may be null. When resuming, keeps the rows up to the restored step (a
+  // killed run may have written more, and half a row) and appends.
   History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume);
   void record(const World& world, Integrator& integrator);
 
  private:
+  std::filesystem::path path_;
   std::ofstream out_;
   const Body* shape_body_;
 };

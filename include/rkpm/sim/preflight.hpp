@@ -41,9 +41,10 @@ struct RunEstimate {
   double particles = 0.0;
   double memory_bytes = 0.0;
   double frame_bytes = 0.0;           // one frame, uncompressed
-  std::optional<double> frames;       // frames the run writes; empty when the scene cannot say
+  std::optional<double> frames;       // at most this many frames (one per `every` up to t_end, at
+                                      // most one per step); empty when the scene does not bound them
   double checkpoint_bytes = 0.0;
-  double output_bytes = 0.0;          // frames (or the first and last when unknown) + checkpoint
+  double output_bytes = 0.0;          // the bound on frames (or the first and last) + checkpoint
 };
 
 // Limits a run must fit in. Absent: taken from the machine (available memory, cgroup
@@ -70,9 +71,20 @@ std::optional<double> available_disk(const std::filesystem::path& dir);
 
 // Throws PreflightError when the estimate does not fit: more particles or entries than
 // the 32-bit particle index can address, more memory than `limits.memory_bytes` (or the
-// machine's), more output than the free space of `out_dir`.
-void check_limits(const scene::Scene& scene, const RunEstimate& estimate, const RunLimits& limits,
-                  const std::filesystem::path& out_dir);
+// machine's). Called before anything is built.
+void check_memory(const RunEstimate& estimate, const RunLimits& limits);
+
+// Frames a run writes: with the step `dt` of a dynamic run known (after set-up), one per
+// `every` or per step, whichever is fewer, up to t_end; without it the first and last
+// only, which every run writes (relaxation's pseudo-time step grows and shrinks).
+// `step_limit` > 0 (rkpm run --max-steps) bounds the steps, and so the frames, further.
+double frames_expected(const scene::Scene& scene, const RunEstimate& estimate, std::optional<double> dt,
+                       std::int64_t step_limit = 0);
+
+// Throws PreflightError when `frames` frames and the checkpoint exceed the free space of
+// `out_dir` (or limits.disk_bytes), naming [output] every.
+void check_disk(const scene::Scene& scene, const RunEstimate& estimate, double frames, const RunLimits& limits,
+                const std::filesystem::path& out_dir);
 
 // The estimate as a short table, with the limits it is checked against.
 void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstimate& estimate,

@@ -18,6 +18,8 @@ enum ExitCode : int {
   kBadInput = 2,     // the scene (or a file it names) is wrong; nothing was written
   kUnstable = 3,     // the simulation blew up; the last good frame is kept
   kIncomplete = 4,   // max_steps (or, relaxing, t_end) was reached before t_end or convergence
+  kOutputFailed = 5, // the output folder could not be created or written (disk full, no permission);
+                     // the frames listed in the .pvd are complete, the last checkpoint is usable
 };
 
 struct RunOptions {
