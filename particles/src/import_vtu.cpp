@@ -1,19 +1,38 @@
 // .vtu import: the only translation unit that sees VTK headers.
+//
+// Everything read from the file is checked before it is used: the grid's cell
+// array (offsets, sizes, types and point ids) and the point coordinates. VTK's
+// own diagnostics are collected while the file is read and folded into the one
+// CloudError, so a bad file gives a single message naming it and nothing else on
+// the terminal.
 #include "rkpm/particles/element_geometry.hpp"
 #include "rkpm/particles/generators.hpp"
 
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
 #include <vtkCellTypes.h>
 #include <vtkCommand.h>
-#include <vtkIdList.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 #include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 namespace rkpm::particles {
 namespace {
@@ -22,11 +41,143 @@ namespace {
   throw CloudError("import_vtu '" + path + "': " + what);
 }
 
-// Collects the reader's error messages for our exception instead of letting VTK
-// print them to the terminal.
+// An output window that keeps what VTK would print (errors of the reader and of
+// the pipeline executive, warnings of the XML parser) instead of printing it.
+class CollectingOutputWindow : public vtkOutputWindow {
+ public:
+  static CollectingOutputWindow* New();
+  vtkTypeMacro(CollectingOutputWindow, vtkOutputWindow)
+  void DisplayText(const char* text) override {
+    if (text) (this->GetCurrentMessageType() == MESSAGE_TYPE_ERROR ? errors : others) += text;
+  }
+  std::string errors;  // a file with errors is refused
+  std::string others;  // warnings and text: dropped when the file reads
+
+ protected:
+  CollectingOutputWindow() = default;
+  ~CollectingOutputWindow() override = default;
+};
+vtkStandardNewMacro(CollectingOutputWindow);
+
+// For its lifetime, VTK's messages go to a CollectingOutputWindow and vtkLogger
+// writes nothing to stderr (VTK 9 logs each error there as well as to the output
+// window). Both are restored afterwards.
+class CaptureVtkMessages {
+ public:
+  CaptureVtkMessages()
+      : previous_window_(vtkOutputWindow::GetInstance()), previous_verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {
+    vtkOutputWindow::SetInstance(window_);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~CaptureVtkMessages() {
+    vtkOutputWindow::SetInstance(previous_window_);
+    vtkLogger::SetStderrVerbosity(previous_verbosity_);
+  }
+  CaptureVtkMessages(const CaptureVtkMessages&) = delete;
+  CaptureVtkMessages& operator=(const CaptureVtkMessages&) = delete;
+
+  std::string& errors() { return window_->errors; }
+
+ private:
+  vtkSmartPointer<vtkOutputWindow> previous_window_;
+  vtkLogger::Verbosity previous_verbosity_;
+  vtkNew<CollectingOutputWindow> window_;
+};
+
+// Errors the reader reports through its own ErrorEvent (it then prints nothing),
+// in order with those of the XML parser and the pipeline.
 void collect_error(vtkObject*, unsigned long, void* client_data, void* call_data) {
   auto* messages = static_cast<std::string*>(client_data);
   if (call_data) *messages += static_cast<const char*>(call_data);
+}
+
+// The first line of VTK's messages that says what is wrong: terminal escape
+// sequences removed, the "ERROR: In FILE, line N" headers and the
+// "vtkClass (0x...): " prefix dropped.
+std::string first_meaningful_line(const std::string& messages) {
+  std::string clean;
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    const char c = messages[i];
+    if (c == '\x1b') {  // CSI sequence: ESC [ parameters final-byte
+      if (i + 1 < messages.size() && messages[i + 1] == '[') {
+        i += 2;
+        while (i < messages.size() && !(messages[i] >= '@' && messages[i] <= '~')) ++i;
+      }
+      continue;
+    }
+    if (c == '\n' || (static_cast<unsigned char>(c) >= 0x20 && c != '\x7f')) clean += c;
+  }
+  std::istringstream lines(clean);
+  std::string line;
+  while (std::getline(lines, line)) {
+    const auto begin = line.find_first_not_of(" \t");
+    if (begin == std::string::npos) continue;
+    line.erase(0, begin);
+    if (line.rfind("ERROR: In ", 0) == 0 || line.rfind("Warning: In ", 0) == 0 ||
+        line.rfind("Generic Warning: In ", 0) == 0) {
+      continue;
+    }
+    const auto prefix = line.find("): ");
+    if (line.rfind("vtk", 0) == 0 && prefix != std::string::npos && line.find(" (", 0) < prefix) {
+      line.erase(0, prefix + 3);
+    }
+    constexpr std::size_t max_length = 300;
+    if (line.size() > max_length) line = line.substr(0, max_length) + "...";
+    return line;
+  }
+  return "";
+}
+
+// The sizes a file declares in its XML attributes, checked before VTK's reader
+// acts on them: it allocates and loops by them without bounds (NumberOfComponents
+// = "34294967295" makes VTK 9.1 loop for minutes, NumberOfPoints = "1e15" asks
+// for petabytes). VTK reads these attributes with operator>>; a value that does
+// not parse that way as an integer, or lies outside its range, is refused.
+//   NumberOfComponents of an array: 1 to kMaxComponents
+//   NumberOfTuples of an array, NumberOfPoints and NumberOfCells of a piece:
+//     0 to kItemsPerFileByte per byte of the file; even compressed, a real mesh
+//     takes more than a byte of the file per 1024 points or cells
+constexpr long long kMaxComponents = 1024;
+constexpr long long kItemsPerFileByte = 1024;
+
+void check_integer_attribute(const std::string& path, vtkXMLDataElement* element, const char* attribute,
+                             long long min, long long max) {
+  const char* text = element->GetAttribute(attribute);
+  if (text == nullptr) return;
+  std::istringstream in(text);
+  long long value = 0;
+  in >> value;
+  if (!in.fail() && value >= min && value <= max) return;
+  std::string where = element->GetName() ? element->GetName() : "element";
+  if (const char* name = element->GetAttribute("Name")) where += std::string(" \"") + name + "\"";
+  std::string shown = text;
+  if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
+  fail(path, where + " declares " + attribute + "=\"" + shown + "\", expected an integer from " +
+                 std::to_string(min) + " to " + std::to_string(max));
+}
+
+void check_declared_sizes(const std::string& path, vtkXMLDataElement* root) {
+  std::error_code ec;
+  const auto file_size = std::filesystem::file_size(path, ec);
+  const long long max_items =
+      ec ? std::numeric_limits<std::int32_t>::max()
+         : static_cast<long long>(std::min<std::uintmax_t>(file_size, std::numeric_limits<std::int32_t>::max()) *
+                                  kItemsPerFileByte);
+  std::vector<vtkXMLDataElement*> pending = {root};
+  while (!pending.empty()) {
+    vtkXMLDataElement* element = pending.back();
+    pending.pop_back();
+    if (element == nullptr) continue;
+    const std::string name = element->GetName() ? element->GetName() : "";
+    if (name == "Piece") {
+      check_integer_attribute(path, element, "NumberOfPoints", 0, max_items);
+      check_integer_attribute(path, element, "NumberOfCells", 0, max_items);
+    } else if (name == "DataArray" || name == "Array") {
+      check_integer_attribute(path, element, "NumberOfComponents", 1, kMaxComponents);
+      check_integer_attribute(path, element, "NumberOfTuples", 0, max_items);
+    }
+    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) pending.push_back(element->GetNestedElement(i));
+  }
 }
 
 std::string cell_type_name(int type) {
@@ -34,29 +185,63 @@ std::string cell_type_name(int type) {
   return (name ? std::string(name) : std::string("unknown")) + " (VTK type " + std::to_string(type) + ")";
 }
 
-}  // namespace
+// The cell array as read: offsets (n_cells + 1, starting at 0, never decreasing,
+// ending at the connectivity's length) and the point ids of every cell.
+struct CellView {
+  const vtkTypeInt64* offsets64 = nullptr;
+  const vtkTypeInt32* offsets32 = nullptr;
+  const vtkTypeInt64* ids64 = nullptr;
+  const vtkTypeInt32* ids32 = nullptr;
+  vtkIdType n_offsets = 0;
+  vtkIdType n_ids = 0;
 
-Cloud import_vtu(const std::string& path) {
-  if (!std::ifstream(path).good()) fail(path, "cannot open the file for reading");
+  std::int64_t offset(vtkIdType i) const { return offsets64 ? offsets64[i] : offsets32[i]; }
+  std::int64_t id(std::int64_t k) const { return ids64 ? ids64[k] : ids32[k]; }
+};
 
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  if (!reader->CanReadFile(path.c_str())) fail(path, "not a VTK XML UnstructuredGrid (.vtu) file");
-  std::string errors;
-  vtkNew<vtkCallbackCommand> on_error;
-  on_error->SetCallback(collect_error);
-  on_error->SetClientData(&errors);
-  reader->AddObserver(vtkCommand::ErrorEvent, on_error);
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  vtkUnstructuredGrid* grid = reader->GetOutput();
-  if (!errors.empty() || grid == nullptr) fail(path, "the reader failed: " + errors);
+CellView view_cells(const std::string& path, vtkCellArray* cells) {
+  CellView view;
+  if (cells == nullptr) fail(path, "the grid has no cell array");
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  vtkDataArray* ids = cells->GetConnectivityArray();
+  if (offsets == nullptr || ids == nullptr || offsets->GetNumberOfComponents() != 1 ||
+      ids->GetNumberOfComponents() != 1) {
+    fail(path, "the cell array has no offsets or connectivity");
+  }
+  view.n_offsets = offsets->GetNumberOfValues();
+  view.n_ids = ids->GetNumberOfValues();
+  if (cells->IsStorage64Bit()) {
+    view.offsets64 = cells->GetOffsetsArray64()->GetPointer(0);
+    view.ids64 = cells->GetConnectivityArray64()->GetPointer(0);
+  } else {
+    view.offsets32 = cells->GetOffsetsArray32()->GetPointer(0);
+    view.ids32 = cells->GetConnectivityArray32()->GetPointer(0);
+  }
+  if (view.n_offsets < 1 || view.offset(0) != 0) fail(path, "the cell offsets do not start at 0");
+  for (vtkIdType c = 0; c + 1 < view.n_offsets; ++c) {
+    if (view.offset(c + 1) < view.offset(c)) {
+      fail(path, "the cell offsets decrease at cell " + std::to_string(c) + " (" + std::to_string(view.offset(c)) +
+                     " then " + std::to_string(view.offset(c + 1)) + ")");
+    }
+  }
+  if (view.offset(view.n_offsets - 1) != view.n_ids) {
+    fail(path, "the cell offsets end at " + std::to_string(view.offset(view.n_offsets - 1)) +
+                   " but the connectivity has " + std::to_string(view.n_ids) + " point ids");
+  }
+  return view;
+}
 
-  const vtkIdType n_points = grid->GetNumberOfPoints();
-  if (n_points == 0) fail(path, "the grid has no points");
-
+// Checks every cell of the grid before any of them is used: supported types, the
+// number of points each type has, point ids inside [0, n_points).
+void check_cells(const std::string& path, const CellView& cells, vtkUnsignedCharArray* types, vtkIdType n_points) {
+  const vtkIdType n_cells = cells.n_offsets - 1;
+  if (types == nullptr || types->GetNumberOfValues() != n_cells || types->GetNumberOfComponents() != 1) {
+    fail(path, "the grid has " + std::to_string(n_cells) + " cells but " +
+                   std::to_string(types ? types->GetNumberOfValues() : 0) + " cell types");
+  }
   std::map<int, vtkIdType> unsupported;  // cell type -> count
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    const int type = grid->GetCellType(c);
+  for (vtkIdType c = 0; c < n_cells; ++c) {
+    const int type = types->GetValue(c);
     if (type != VTK_TETRA && type != VTK_HEXAHEDRON) ++unsupported[type];
   }
   if (!unsupported.empty()) {
@@ -65,7 +250,63 @@ Cloud import_vtu(const std::string& path) {
     for (const auto& [type, count] : unsupported) msg << " " << count << " x " << cell_type_name(type) << ";";
     fail(path, msg.str());
   }
-  if (grid->GetNumberOfCells() == 0) fail(path, "the grid has no cells");
+  if (n_cells == 0) fail(path, "the grid has no cells");
+  if (n_cells > std::numeric_limits<std::int32_t>::max() - 1) {
+    fail(path, "the grid has " + std::to_string(n_cells) + " cells, more than a cloud can hold");
+  }
+  for (vtkIdType c = 0; c < n_cells; ++c) {
+    const int type = types->GetValue(c);
+    const std::int64_t begin = cells.offset(c), size = cells.offset(c + 1) - begin;
+    const int expected = type == VTK_TETRA ? 4 : 8;
+    if (size != expected) {
+      fail(path, "cell " + std::to_string(c) + " (" + cell_type_name(type) + ") has " + std::to_string(size) +
+                     " points, expected " + std::to_string(expected));
+    }
+    for (std::int64_t k = begin; k < begin + size; ++k) {
+      const std::int64_t id = cells.id(k);
+      if (id < 0 || id >= n_points) {
+        fail(path, "cell " + std::to_string(c) + " (" + cell_type_name(type) + ") refers to point " +
+                       std::to_string(id) + ", but the file has " + std::to_string(n_points) +
+                       " points (ids 0 to " + std::to_string(n_points - 1) + ")");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Cloud import_vtu(const std::string& path) {
+  if (!std::ifstream(path).good()) fail(path, "cannot open the file for reading");
+
+  CaptureVtkMessages capture;
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  if (!reader->CanReadFile(path.c_str())) fail(path, "not a VTK XML UnstructuredGrid (.vtu) file");
+  vtkNew<vtkCallbackCommand> on_error;
+  on_error->SetCallback(collect_error);
+  on_error->SetClientData(&capture.errors());
+  reader->AddObserver(vtkCommand::ErrorEvent, on_error);
+  reader->SetFileName(path.c_str());
+  const auto refuse_on_errors = [&]() {
+    if (capture.errors().empty()) return;
+    std::string what = first_meaningful_line(capture.errors());
+    fail(path, "the reader failed" + (what.empty() ? std::string() : ": " + what));
+  };
+  // Parses the XML and reads the pieces' sizes; no array is created yet.
+  reader->UpdateInformation();
+  refuse_on_errors();
+  if (vtkXMLDataParser* parser = reader->GetXMLParser()) check_declared_sizes(path, parser->GetRootElement());
+  reader->Update();
+  refuse_on_errors();
+  vtkUnstructuredGrid* grid = reader->GetOutput();
+  if (grid == nullptr) fail(path, "the reader produced no grid");
+
+  const vtkIdType n_points = grid->GetNumberOfPoints();
+  if (n_points == 0 || grid->GetPoints() == nullptr) fail(path, "the grid has no points");
+  if (n_points > std::numeric_limits<std::int32_t>::max()) {
+    fail(path, "the grid has " + std::to_string(n_points) + " points, more than a cloud can hold");
+  }
+  const CellView cells = view_cells(path, grid->GetCells());
+  check_cells(path, cells, grid->GetCellTypesArray(), n_points);
 
   Cloud cloud;
   cloud.name = path;
@@ -73,21 +314,29 @@ Cloud import_vtu(const std::string& path) {
   for (vtkIdType p = 0; p < n_points; ++p) {
     double x[3];
     grid->GetPoint(p, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2])) {
+      std::ostringstream msg;
+      msg << "point " << p << " has a non-finite coordinate (" << x[0] << ", " << x[1] << ", " << x[2] << ")";
+      fail(path, msg.str());
+    }
     cloud.X[p] = Vec3(x[0], x[1], x[2]);
   }
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    grid->GetCellPoints(c, ids);
+  const vtkIdType n_cells = cells.n_offsets - 1;
+  for (vtkIdType c = 0; c < n_cells; ++c) {
     std::int32_t nodes[8];
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k) nodes[k] = static_cast<std::int32_t>(ids->GetId(k));
-    cloud.mesh.add_element(grid->GetCellType(c) == VTK_TETRA ? ElementType::Tet4 : ElementType::Hex8, nodes);
+    const std::int64_t begin = cells.offset(c);
+    for (std::int64_t k = 0; k < cells.offset(c + 1) - begin; ++k) {
+      nodes[k] = static_cast<std::int32_t>(cells.id(begin + k));
+    }
+    const int type = grid->GetCellTypesArray()->GetValue(c);
+    cloud.mesh.add_element(type == VTK_TETRA ? ElementType::Tet4 : ElementType::Hex8, nodes);
   }
 
   // Inverted cells are the usual defect of exported meshes (node order of a
   // mirrored part): report how many, not only the first, before finalize_cloud.
   int inverted = 0, first_inverted = -1;
   for (int e = 0; e < cloud.mesh.n_elements(); ++e) {
-    if (element_min_scaled_jacobian(cloud, e) <= 0.0) {
+    if (!(element_min_scaled_jacobian(cloud, e) > 0.0)) {
       if (inverted++ == 0) first_inverted = e;
     }
   }

@@ -3,9 +3,13 @@
 
 #include "rkpm/particles/generators.hpp"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <regex>
+#include <sstream>
 
 namespace rkpm::particles {
 namespace {
@@ -132,6 +136,98 @@ TEST(ImportVtu, InvertedCellsAreCounted) {
     std::swap_ranges(n, n + 4, n + 4);
   }
   expect_import_error(write_cloud("inverted.vtu", block), {"2 of 60 cells are inverted", "first: cell 3"});
+}
+
+// One tetrahedron, its cells replaced by `cells`.
+std::string write_tet_file(const std::string& name, const std::vector<VtuCell>& cells) {
+  return write_vtu(name, {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, cells);
+}
+
+std::string write_text(const std::string& name, const std::string& text) {
+  const fs::path path = fs::path(::testing::TempDir()) / "rkpm_particles_vtu" / name;
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+  return path.string();
+}
+
+std::string text_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Cells naming points the file does not have were read out of bounds (by the
+// element-quality check) before they were rejected.
+TEST(ImportVtu, PointIdBeyondThePointsIsNamed) {
+  expect_import_error(write_tet_file("bad_id.vtu", {{10, {0, 1, 2, 3}}, {10, {0, 1, 2, 40}}}),
+                      {"cell 1 (vtkTetra (VTK type 10)) refers to point 40", "the file has 4 points (ids 0 to 3)"});
+}
+
+TEST(ImportVtu, NegativePointIdIsNamed) {
+  expect_import_error(write_tet_file("negative_id.vtu", {{10, {0, -1, 2, 3}}}), {"cell 0", "refers to point -1"});
+}
+
+TEST(ImportVtu, CellSizeMustMatchItsType) {
+  expect_import_error(write_tet_file("short_hex.vtu", {{10, {0, 1, 2, 3}}, {12, {0, 1, 2, 3, 0, 1, 2}}}),
+                      {"cell 1 (vtkHexahedron (VTK type 12)) has 7 points, expected 8"});
+  expect_import_error(write_tet_file("long_tet.vtu", {{10, {0, 1, 2, 3, 0, 1, 2, 3, 0}}}),
+                      {"cell 0 (vtkTetra (VTK type 10)) has 9 points, expected 4"});
+}
+
+TEST(ImportVtu, NonFiniteCoordinateIsNamed) {
+  const std::string good = write_tet_file("finite.vtu", {{10, {0, 1, 2, 3}}});
+  const std::string text = std::regex_replace(text_of(good), std::regex("\n0 1 0\n"), "\n0 nan 0\n");
+  ASSERT_NE(text, text_of(good));
+  expect_import_error(write_text("nan.vtu", text), {"point 2 has a non-finite coordinate"});
+}
+
+// VTK's reader loops and allocates by the sizes the XML declares: absurd ones are
+// refused before it acts on them.
+TEST(ImportVtu, AbsurdDeclaredSizesAreRefusedBeforeReading) {
+  const std::string good = text_of(write_tet_file("sizes.vtu", {{10, {0, 1, 2, 3}}}));
+  expect_import_error(
+      write_text("components.vtu", std::regex_replace(good, std::regex("NumberOfComponents=\"3\""),
+                                                      "NumberOfComponents=\"34294967295\"")),
+      {"DataArray declares NumberOfComponents=\"34294967295\", expected an integer from 1 to 1024"});
+  expect_import_error(write_text("points.vtu", std::regex_replace(good, std::regex("NumberOfPoints=\"4\""),
+                                                                  "NumberOfPoints=\"1000000000000000\"")),
+                      {"Piece declares NumberOfPoints=\"1000000000000000\""});
+  expect_import_error(write_text("cells.vtu", std::regex_replace(good, std::regex("NumberOfCells=\"1\""),
+                                                                 "NumberOfCells=\"-1\"")),
+                      {"Piece declares NumberOfCells=\"-1\", expected an integer from 0 to"});
+}
+
+// VTK's own diagnostics (a coloured dump of the pipeline on the terminal) are
+// folded into the one error: nothing reaches stderr, the message names the file
+// and says what the reader found, without VTK's headers or escape codes.
+TEST(ImportVtu, ReaderDiagnosticsBecomeOneMessage) {
+  const std::string good = text_of(write_tet_file("whole.vtu", {{10, {0, 1, 2, 3}}}));
+  const std::string path = write_text("truncated.vtu", good.substr(0, good.find("<Cells>") + 20));
+  ::testing::internal::CaptureStderr();
+  std::string what;
+  try {
+    import_vtu(path);
+  } catch (const CloudError& e) {
+    what = e.what();
+  }
+  const std::string err = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(err, "");
+  EXPECT_NE(what.find("import_vtu '" + path + "': the reader failed: "), std::string::npos) << what;
+  EXPECT_EQ(what.find('\x1b'), std::string::npos) << what;
+  EXPECT_EQ(what.find("ERROR: In"), std::string::npos) << what;
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+
+  // The capture ends with the import: a valid file still imports afterwards.
+  EXPECT_EQ(import_vtu(write_tet_file("after.vtu", {{10, {0, 1, 2, 3}}})).size(), 4u);
+}
+
+TEST(ImportVtu, ErrorsInsideTheDataAreOneMessageToo) {
+  const std::string good = text_of(write_tet_file("data.vtu", {{10, {0, 1, 2, 3}}}));
+  const std::string path = write_text("short_points.vtu", std::regex_replace(good, std::regex("\n0 0 1\n"), "\n"));
+  ::testing::internal::CaptureStderr();
+  expect_import_error(path, {"the reader failed: "});
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
 }
 
 }  // namespace
