@@ -17,6 +17,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkPoints.h>
+#include <vtkSetGet.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -26,10 +27,14 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
+#include <locale>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -128,55 +133,164 @@ std::string first_meaningful_line(const std::string& messages) {
   return "";
 }
 
-// The sizes a file declares in its XML attributes, checked before VTK's reader
-// acts on them: it allocates and loops by them without bounds (NumberOfComponents
-// = "34294967295" makes VTK 9.1 loop for minutes, NumberOfPoints = "1e15" asks
-// for petabytes). VTK reads these attributes with operator>>; a value that does
-// not parse that way as an integer, or lies outside its range, is refused.
+// The sizes a file declares, checked before VTK's reader acts on them: it
+// allocates and loops by them without bounds (NumberOfComponents = "34294967295"
+// makes VTK 9.1 loop for minutes, a last cell offset of 2^61 makes it allocate a
+// wrapped-around size and write past it). VTK reads attributes with operator>>; a
+// value that does not parse that way as an integer, or lies outside its range, is
+// refused.
 //   NumberOfComponents of an array: 1 to kMaxComponents
-//   NumberOfTuples of an array, NumberOfPoints and NumberOfCells of a piece:
-//     0 to kItemsPerFileByte per byte of the file; even compressed, a real mesh
-//     takes more than a byte of the file per 1024 points or cells
+//   the values an array holds (tuples x components), NumberOfPoints and
+//     NumberOfCells of a piece: at most kItemsPerFileByte per byte of the file;
+//     even compressed, a real mesh takes more than a byte per 1024 values
+//   the cell offsets: at most 8 points per cell (tetrahedra and hexahedra only)
 constexpr long long kMaxComponents = 1024;
 constexpr long long kItemsPerFileByte = 1024;
+constexpr long long kMaxPointsPerCell = 8;
 
-void check_integer_attribute(const std::string& path, vtkXMLDataElement* element, const char* attribute,
-                             long long min, long long max) {
+std::string element_label(vtkXMLDataElement* element) {
+  std::string label = element->GetName() ? element->GetName() : "element";
+  if (const char* name = element->GetAttribute("Name")) label += std::string(" \"") + name + "\"";
+  return label;
+}
+
+// The attribute's value, `absent` if the element does not have it.
+long long integer_attribute(const std::string& path, vtkXMLDataElement* element, const char* attribute,
+                            long long min, long long max, long long absent) {
   const char* text = element->GetAttribute(attribute);
-  if (text == nullptr) return;
+  if (text == nullptr) return absent;
   std::istringstream in(text);
   long long value = 0;
   in >> value;
-  if (!in.fail() && value >= min && value <= max) return;
-  std::string where = element->GetName() ? element->GetName() : "element";
-  if (const char* name = element->GetAttribute("Name")) where += std::string(" \"") + name + "\"";
+  if (!in.fail() && value >= min && value <= max) return value;
   std::string shown = text;
   if (shown.size() > 40) shown = shown.substr(0, 40) + "...";
-  fail(path, where + " declares " + attribute + "=\"" + shown + "\", expected an integer from " +
+  fail(path, element_label(element) + " declares " + attribute + "=\"" + shown + "\", expected an integer from " +
                  std::to_string(min) + " to " + std::to_string(max));
 }
 
-void check_declared_sizes(const std::string& path, vtkXMLDataElement* root) {
+long long max_items_for(const std::string& path) {
   std::error_code ec;
   const auto file_size = std::filesystem::file_size(path, ec);
-  const long long max_items =
-      ec ? std::numeric_limits<std::int32_t>::max()
-         : static_cast<long long>(std::min<std::uintmax_t>(file_size, std::numeric_limits<std::int32_t>::max()) *
-                                  kItemsPerFileByte);
-  std::vector<vtkXMLDataElement*> pending = {root};
+  const std::uintmax_t bytes = ec ? 1 : std::max<std::uintmax_t>(file_size, 1);
+  return static_cast<long long>(std::min<std::uintmax_t>(bytes, std::numeric_limits<std::int32_t>::max()) *
+                                kItemsPerFileByte);
+}
+
+// Walks the parsed XML (no array has been read yet) and checks every declared size.
+void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long long max_items) {
+  struct Pending {
+    vtkXMLDataElement* element;
+    long long tuples;  // tuples of the arrays inside (points or cells of the piece), -1 if not known
+  };
+  std::vector<Pending> pending = {{root, -1}};
   while (!pending.empty()) {
-    vtkXMLDataElement* element = pending.back();
+    const Pending item = pending.back();
     pending.pop_back();
+    vtkXMLDataElement* element = item.element;
     if (element == nullptr) continue;
     const std::string name = element->GetName() ? element->GetName() : "";
+    long long n_points = -1, n_cells = -1;
     if (name == "Piece") {
-      check_integer_attribute(path, element, "NumberOfPoints", 0, max_items);
-      check_integer_attribute(path, element, "NumberOfCells", 0, max_items);
+      n_points = integer_attribute(path, element, "NumberOfPoints", 0, max_items, -1);
+      n_cells = integer_attribute(path, element, "NumberOfCells", 0, max_items, -1);
     } else if (name == "DataArray" || name == "Array") {
-      check_integer_attribute(path, element, "NumberOfComponents", 1, kMaxComponents);
-      check_integer_attribute(path, element, "NumberOfTuples", 0, max_items);
+      const long long components = integer_attribute(path, element, "NumberOfComponents", 1, kMaxComponents, 1);
+      const long long declared = integer_attribute(path, element, "NumberOfTuples", 0, max_items, -1);
+      const long long tuples = declared >= 0 ? declared : item.tuples;
+      if (tuples >= 0 && components * tuples > max_items) {
+        fail(path, element_label(element) + " declares " + std::to_string(tuples) + " tuples of " +
+                       std::to_string(components) + " components, more than the file can hold (" +
+                       std::to_string(max_items) + " values at most)");
+      }
+    } else if (name == "InformationKey") {
+      integer_attribute(path, element, "length", 0, kMaxComponents, 0);
     }
-    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) pending.push_back(element->GetNestedElement(i));
+    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) {
+      vtkXMLDataElement* child = element->GetNestedElement(i);
+      const std::string child_name = child && child->GetName() ? child->GetName() : "";
+      long long tuples = item.tuples;
+      if (name == "Piece") tuples = (child_name == "Points" || child_name == "PointData") ? n_points
+                                    : child_name == "CellData"                          ? n_cells
+                                                                                        : -1;
+      pending.push_back({child, tuples});
+    }
+  }
+}
+
+bool is_integer_type(int type) {
+  switch (type) {
+    case VTK_CHAR: case VTK_SIGNED_CHAR: case VTK_UNSIGNED_CHAR: case VTK_SHORT: case VTK_UNSIGNED_SHORT:
+    case VTK_INT: case VTK_UNSIGNED_INT: case VTK_LONG: case VTK_UNSIGNED_LONG: case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG: case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// The largest of the first `count` words in `bytes`; nothing if there is none.
+template <typename T>
+std::optional<long double> largest_word(const std::vector<unsigned char>& bytes, std::size_t count) {
+  std::optional<long double> largest;
+  for (std::size_t i = 0; i < count; ++i) {
+    T value;
+    std::memcpy(&value, bytes.data() + i * sizeof(T), sizeof(T));
+    const auto v = static_cast<long double>(value);
+    if (!largest || v > *largest) largest = v;
+  }
+  return largest;
+}
+
+// VTK sizes the connectivity by the last cell offset before it checks anything:
+// each piece's offsets are read here first, with a parser of our own over the
+// same file (the reader's parser keeps state between reads), and the largest
+// must not exceed kMaxPointsPerCell per declared cell.
+void check_cell_offsets(const std::string& path, vtkXMLDataParser* reader_parser) {
+  std::ifstream stream(path, std::ios::binary);
+  stream.imbue(std::locale::classic());
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetStream(&stream);
+  if (!parser->Parse() || parser->GetRootElement() == nullptr) return;  // the reader reports it
+  parser->SetCompressor(reader_parser->GetCompressor());
+  vtkXMLDataElement* grid = parser->GetRootElement()->FindNestedElementWithName("UnstructuredGrid");
+  if (grid == nullptr) return;
+  for (int p = 0; p < grid->GetNumberOfNestedElements(); ++p) {
+    vtkXMLDataElement* piece = grid->GetNestedElement(p);
+    if (piece == nullptr || piece->GetName() == nullptr || std::string(piece->GetName()) != "Piece") continue;
+    long long n_cells = 0;
+    vtkXMLDataElement* cells = piece->FindNestedElementWithName("Cells");
+    if (cells == nullptr || !piece->GetScalarAttribute("NumberOfCells", n_cells) || n_cells <= 0) continue;
+    vtkXMLDataElement* offsets = cells->FindNestedElementWithNameAndAttribute("DataArray", "Name", "offsets");
+    int type = 0;
+    const char* format = offsets ? offsets->GetAttribute("format") : nullptr;
+    if (offsets == nullptr || format == nullptr || !offsets->GetWordTypeAttribute("type", type) ||
+        !is_integer_type(type)) {
+      continue;
+    }
+    const std::size_t word_size = parser->GetWordTypeSize(type);
+    const auto count = static_cast<std::size_t>(n_cells);
+    std::vector<unsigned char> bytes(count * word_size);
+    std::size_t read = 0;
+    const std::string how = format;
+    if (how == "ascii" || how == "binary") {
+      read = parser->ReadInlineData(offsets, how == "ascii", bytes.data(), 0, count, type);
+    } else if (how == "appended") {
+      vtkTypeInt64 offset = 0;
+      if (!offsets->GetScalarAttribute("offset", offset)) continue;
+      read = parser->ReadAppendedData(offset, bytes.data(), 0, count, type);
+    }
+    std::optional<long double> largest;
+    switch (type) {
+      vtkTemplateMacro(largest = largest_word<VTK_TT>(bytes, std::min(read, count)));
+    }
+    if (largest && *largest > static_cast<long double>(kMaxPointsPerCell) * static_cast<long double>(n_cells)) {
+      std::ostringstream msg;
+      msg << "the cell offsets of piece " << p << " reach " << std::setprecision(20) << *largest << " for "
+          << n_cells << " cells, more than " << kMaxPointsPerCell
+          << " points per cell (only VTK_TETRA and VTK_HEXAHEDRON are accepted)";
+      fail(path, msg.str());
+    }
   }
 }
 
@@ -294,7 +408,11 @@ Cloud import_vtu(const std::string& path) {
   // Parses the XML and reads the pieces' sizes; no array is created yet.
   reader->UpdateInformation();
   refuse_on_errors();
-  if (vtkXMLDataParser* parser = reader->GetXMLParser()) check_declared_sizes(path, parser->GetRootElement());
+  if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
+    check_declared_sizes(path, parser->GetRootElement(), max_items_for(path));
+    check_cell_offsets(path, parser);
+    refuse_on_errors();
+  }
   reader->Update();
   refuse_on_errors();
   vtkUnstructuredGrid* grid = reader->GetOutput();
