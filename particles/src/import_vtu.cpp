@@ -34,6 +34,7 @@
 #include <limits>
 #include <locale>
 #include <map>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -242,17 +243,120 @@ std::optional<long double> largest_word(const std::vector<unsigned char>& bytes,
   return largest;
 }
 
-// VTK sizes the connectivity by the last cell offset before it checks anything:
-// each piece's offsets are read here first, with a parser of our own over the
-// same file (the reader's parser keeps state between reads), and the largest
-// must not exceed kMaxPointsPerCell per declared cell.
-void check_cell_offsets(const std::string& path, vtkXMLDataParser* reader_parser) {
+// The first `n` bytes of base64 text (whitespace skipped), as far as they decode.
+std::string decode_base64_prefix(std::istream& in, std::size_t n) {
+  std::string bytes;
+  unsigned bits = 0;
+  int n_bits = 0;
+  char c = 0;
+  while (bytes.size() < n && in.get(c)) {
+    int v = -1;
+    if (c >= 'A' && c <= 'Z') v = c - 'A';
+    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
+    else if (c >= '0' && c <= '9') v = c - '0' + 52;
+    else if (c == '+') v = 62;
+    else if (c == '/') v = 63;
+    else if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+    else break;  // '=' or anything else ends the prefix
+    bits = (bits << 6) | static_cast<unsigned>(v);
+    n_bits += 6;
+    if (n_bits >= 8) {
+      n_bits -= 8;
+      bytes += static_cast<char>((bits >> n_bits) & 0xFF);
+    }
+  }
+  return bytes;
+}
+
+// Compressed binary data start with a header: the number of blocks, the size of a
+// block before compression, that of the last block, then one compressed size per
+// block. VTK allocates (and zeroes) the list of sizes by the first number and
+// each block's buffer by the second before reading anything: a 2^32-1 block count
+// in a 2 kB file takes 16 GB. Each header is read here first: its size list must
+// fit in the file, the uncompressed data in 8 bytes per value the file may hold.
+void check_compression_headers(const std::string& path, vtkXMLDataParser* parser, std::istream& stream,
+                               long long max_items) {
+  vtkXMLDataElement* root = parser->GetRootElement();
+  if (root->GetAttribute("compressor") == nullptr) return;
+  const char* header_type = root->GetAttribute("header_type");
+  const std::size_t word = header_type && std::string(header_type) == "UInt64" ? 8 : 4;
+  const char* byte_order = root->GetAttribute("byte_order");
+  const bool big_endian = byte_order && std::string(byte_order) == "BigEndian";
+  std::error_code ec;
+  const auto file_size = static_cast<long double>(std::filesystem::file_size(path, ec));
+  if (ec) return;
+  bool appended_raw = false;
+  if (vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData")) {
+    const char* encoding = appended->GetAttribute("encoding");
+    appended_raw = encoding && std::string(encoding) == "raw";
+  }
+
+  std::vector<vtkXMLDataElement*> pending = {root};
+  while (!pending.empty()) {
+    vtkXMLDataElement* element = pending.back();
+    pending.pop_back();
+    for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) pending.push_back(element->GetNestedElement(i));
+    const char* format = element->GetAttribute("format");
+    if (element->GetName() == nullptr || std::string(element->GetName()) != "DataArray" || format == nullptr) continue;
+    bool raw = false;
+    stream.clear();
+    if (std::string(format) == "binary") {
+      // Inline data start after the opening tag and any whitespace.
+      stream.seekg(element->GetXMLByteIndex());
+      char c = 0;
+      while (stream.get(c) && c != '>') {
+      }
+    } else if (std::string(format) == "appended") {
+      long long offset = 0;
+      if (!element->GetScalarAttribute("offset", offset) || offset < 0 || parser->GetAppendedDataPosition() <= 0) {
+        continue;
+      }
+      stream.seekg(parser->GetAppendedDataPosition() + offset);
+      raw = appended_raw;
+    } else {
+      continue;
+    }
+    std::string header(3 * word, '\0');
+    if (raw) {
+      stream.read(header.data(), static_cast<std::streamsize>(header.size()));
+      header.resize(static_cast<std::size_t>(std::max<std::streamsize>(stream.gcount(), 0)));
+    } else {
+      header = decode_base64_prefix(stream, 3 * word);
+    }
+    if (header.size() < 3 * word) continue;  // the reader reports a short header
+    long double values[3];
+    for (int k = 0; k < 3; ++k) {
+      std::uint64_t v = 0;
+      for (std::size_t b = 0; b < word; ++b) {
+        const auto byte = static_cast<unsigned char>(header[k * word + (big_endian ? b : word - 1 - b)]);
+        v = (v << 8) | byte;
+      }
+      values[k] = static_cast<long double>(v);
+    }
+    const long double blocks = values[0], block_size = values[1];
+    if (blocks * word > file_size || blocks * block_size > 8.0L * max_items) {
+      std::ostringstream msg;
+      msg << element_label(element) << ": its compression header declares " << std::setprecision(20) << blocks
+          << " blocks of " << block_size << " bytes, more than the file can hold";
+      fail(path, msg.str());
+    }
+  }
+}
+
+// The data VTK sizes its work by, read first with a parser of our own over the
+// same file (the reader's parser keeps state between reads): every compression
+// header, then each piece's cell offsets. VTK sizes the connectivity by the last
+// offset before it checks anything; the largest must not exceed
+// kMaxPointsPerCell per declared cell.
+void check_data(const std::string& path, vtkXMLDataParser* reader_parser, long long max_items) {
   std::ifstream stream(path, std::ios::binary);
   stream.imbue(std::locale::classic());
   vtkNew<vtkXMLDataParser> parser;
   parser->SetStream(&stream);
   if (!parser->Parse() || parser->GetRootElement() == nullptr) return;  // the reader reports it
   parser->SetCompressor(reader_parser->GetCompressor());
+  check_compression_headers(path, parser, stream, max_items);
+  stream.clear();
   vtkXMLDataElement* grid = parser->GetRootElement()->FindNestedElementWithName("UnstructuredGrid");
   if (grid == nullptr) return;
   for (int p = 0; p < grid->GetNumberOfNestedElements(); ++p) {
@@ -405,15 +509,22 @@ Cloud import_vtu(const std::string& path) {
     std::string what = first_meaningful_line(capture.errors());
     fail(path, "the reader failed" + (what.empty() ? std::string() : ": " + what));
   };
-  // Parses the XML and reads the pieces' sizes; no array is created yet.
-  reader->UpdateInformation();
-  refuse_on_errors();
-  if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
-    check_declared_sizes(path, parser->GetRootElement(), max_items_for(path));
-    check_cell_offsets(path, parser);
+  // Parses the XML and reads the pieces' sizes; no array is created yet. What VTK
+  // sizes its work by is checked before the data are read. VTK throws
+  // std::bad_alloc from deep inside the reader when a size the file gives in its
+  // data (a compression header's block count, say) cannot be allocated.
+  try {
+    reader->UpdateInformation();
     refuse_on_errors();
+    if (vtkXMLDataParser* parser = reader->GetXMLParser()) {
+      check_declared_sizes(path, parser->GetRootElement(), max_items_for(path));
+      check_data(path, parser, max_items_for(path));
+      refuse_on_errors();
+    }
+    reader->Update();
+  } catch (const std::bad_alloc&) {
+    fail(path, "the reader ran out of memory: the file declares more data than it holds or than memory allows");
   }
-  reader->Update();
   refuse_on_errors();
   vtkUnstructuredGrid* grid = reader->GetOutput();
   if (grid == nullptr) fail(path, "the reader produced no grid");

@@ -213,6 +213,24 @@ TEST(ImportVtu, HugeCellOffsetsAreRefusedBeforeReading) {
   }
 }
 
+// A compressed array's header gives the number of blocks; VTK 9.1 allocates and
+// zeroes a list of that many sizes before reading on (2^32 - 1 blocks: 16 GB and
+// 45 s for a file of a few hundred bytes). The header is checked against the file.
+TEST(ImportVtu, CompressionHeaderBeyondTheFileIsRefused) {
+  const std::string header = "/////wCAAABgAAAA";  // base64 of UInt32 {2^32 - 1, 32768, 96}
+  const std::string path = write_text(
+      "blocks.vtu",
+      "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n"
+      "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points>\n"
+      "<DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"binary\">\n" +
+          header + "eJxjYMAPAAAcAAE=\n</DataArray>\n</Points>\n<Cells>\n"
+          "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>\n"
+          "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
+          "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+  expect_import_error(path, {"DataArray \"Points\": its compression header declares 4294967295 blocks of 32768 bytes"});
+}
+
 // VTK's own diagnostics (a coloured dump of the pipeline on the terminal) are
 // folded into the one error: nothing reaches stderr, the message names the file
 // and says what the reader found, without VTK's headers or escape codes.
