@@ -141,8 +141,8 @@ std::string first_meaningful_line(const std::string& messages) {
 // value that does not parse that way as an integer, or lies outside its range, is
 // refused.
 //   NumberOfComponents of an array: 1 to kMaxComponents
-//   the values an array holds (tuples x components), NumberOfPoints and
-//     NumberOfCells of a piece: at most kItemsPerFileByte per byte of the file;
+//   the points and the cells of all pieces, and the values of all arrays
+//     (tuples x components): at most kItemsPerFileByte per byte of the file;
 //     even compressed, a real mesh takes more than a byte per 1024 values
 //   the cell offsets: at most 8 points per cell (tetrahedra and hexahedra only)
 constexpr long long kMaxComponents = 1024;
@@ -185,6 +185,11 @@ void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long
     long long tuples;  // tuples of the arrays inside (points or cells of the piece), -1 if not known
   };
   std::vector<Pending> pending = {{root, -1}};
+  long long total_points = 0, total_cells = 0, total_values = 0;
+  const auto too_many = [&](const std::string& what, long long count) {
+    fail(path, "the file declares " + std::to_string(count) + " " + what + " in all, more than it can hold (" +
+                   std::to_string(max_items) + " at most for its size)");
+  };
   while (!pending.empty()) {
     const Pending item = pending.back();
     pending.pop_back();
@@ -195,6 +200,8 @@ void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long
     if (name == "Piece") {
       n_points = integer_attribute(path, element, "NumberOfPoints", 0, max_items, -1);
       n_cells = integer_attribute(path, element, "NumberOfCells", 0, max_items, -1);
+      if ((total_points += std::max(n_points, 0LL)) > max_items) too_many("points", total_points);
+      if ((total_cells += std::max(n_cells, 0LL)) > max_items) too_many("cells", total_cells);
     } else if (name == "DataArray" || name == "Array") {
       const long long components = integer_attribute(path, element, "NumberOfComponents", 1, kMaxComponents, 1);
       const long long declared = integer_attribute(path, element, "NumberOfTuples", 0, max_items, -1);
@@ -204,6 +211,7 @@ void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long
                        std::to_string(components) + " components, more than the file can hold (" +
                        std::to_string(max_items) + " values at most)");
       }
+      if (tuples >= 0 && (total_values += components * tuples) > max_items) too_many("array values", total_values);
     } else if (name == "InformationKey") {
       integer_attribute(path, element, "length", 0, kMaxComponents, 0);
     }
