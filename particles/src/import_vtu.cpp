@@ -143,10 +143,11 @@ std::string first_meaningful_line(const std::string& messages) {
 //   NumberOfComponents of an array: 1 to kMaxComponents
 //   the points and the cells of all pieces, and the values of all arrays
 //     (tuples x components): at most kItemsPerFileByte per byte of the file;
-//     even compressed, a real mesh takes more than a byte per 1024 values
+//     even compressed, a real mesh takes well over a byte per 64 values (its
+//     coordinates and connectivity hardly compress)
 //   the cell offsets: at most 8 points per cell (tetrahedra and hexahedra only)
 constexpr long long kMaxComponents = 1024;
-constexpr long long kItemsPerFileByte = 1024;
+constexpr long long kItemsPerFileByte = 64;
 constexpr long long kMaxPointsPerCell = 8;
 
 std::string element_label(vtkXMLDataElement* element) {
