@@ -278,11 +278,13 @@ std::string decode_base64_prefix(std::istream& in, std::size_t n) {
 }
 
 // Compressed binary data start with a header: the number of blocks, the size of a
-// block before compression, that of the last block, then one compressed size per
-// block. VTK allocates (and zeroes) the list of sizes by the first number and
-// each block's buffer by the second before reading anything: a 2^32-1 block count
-// in a 2 kB file takes 16 GB. Each header is read here first: its size list must
-// fit in the file, the uncompressed data in 8 bytes per value the file may hold.
+// block before compression, that of the last block (0 if it is full), then the
+// compressed size of each block. VTK 9.1 trusts all of it: it allocates and
+// zeroes the list of sizes by the block count (2^32 - 1 blocks in a 1.4 kB file:
+// 16 GB), allocates each block by its sizes, divides by the block size (0: SIGFPE)
+// and reads the list it did not allocate when the count is 0 but the last block
+// is not (SIGSEGV). Each header is read here first and must describe data the
+// file can hold.
 void check_compression_headers(const std::string& path, vtkXMLDataParser* parser, std::istream& stream,
                                long long max_items) {
   vtkXMLDataElement* root = parser->GetRootElement();
@@ -292,7 +294,7 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
   const char* byte_order = root->GetAttribute("byte_order");
   const bool big_endian = byte_order && std::string(byte_order) == "BigEndian";
   std::error_code ec;
-  const auto file_size = static_cast<long double>(std::filesystem::file_size(path, ec));
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
   if (ec) return;
   bool appended_raw = false;
   if (vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData")) {
@@ -325,29 +327,52 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
     } else {
       continue;
     }
-    std::string header(3 * word, '\0');
-    if (raw) {
-      stream.read(header.data(), static_cast<std::streamsize>(header.size()));
-      header.resize(static_cast<std::size_t>(std::max<std::streamsize>(stream.gcount(), 0)));
-    } else {
-      header = decode_base64_prefix(stream, 3 * word);
-    }
-    if (header.size() < 3 * word) continue;  // the reader reports a short header
-    long double values[3];
-    for (int k = 0; k < 3; ++k) {
-      std::uint64_t v = 0;
-      for (std::size_t b = 0; b < word; ++b) {
-        const auto byte = static_cast<unsigned char>(header[k * word + (big_endian ? b : word - 1 - b)]);
-        v = (v << 8) | byte;
+    const std::streampos start = stream.tellg();
+    const auto read_words = [&](std::size_t count) {
+      stream.clear();
+      stream.seekg(start);
+      std::string bytes(count * word, '\0');
+      if (raw) {
+        stream.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(stream.gcount(), 0)));
+      } else {
+        bytes = decode_base64_prefix(stream, count * word);
       }
-      values[k] = static_cast<long double>(v);
+      std::vector<std::uint64_t> words;
+      for (std::size_t k = 0; (k + 1) * word <= bytes.size(); ++k) {
+        std::uint64_t v = 0;
+        for (std::size_t b = 0; b < word; ++b) {
+          v = (v << 8) | static_cast<unsigned char>(bytes[k * word + (big_endian ? b : word - 1 - b)]);
+        }
+        words.push_back(v);
+      }
+      return words;
+    };
+    const auto refuse = [&](const std::string& what) {
+      fail(path, element_label(element) + ": its compression header " + what);
+    };
+    const std::vector<std::uint64_t> header = read_words(3);
+    if (header.size() < 3) continue;  // the reader reports a short header
+    const std::uint64_t blocks = header[0], block_size = header[1], last_size = header[2];
+    if (blocks > file_size / word) {
+      refuse("declares " + std::to_string(blocks) + " blocks, more than the file can hold");
     }
-    const long double blocks = values[0], block_size = values[1];
-    if (blocks * word > file_size || blocks * block_size > 8.0L * max_items) {
-      std::ostringstream msg;
-      msg << element_label(element) << ": its compression header declares " << std::setprecision(20) << blocks
-          << " blocks of " << block_size << " bytes, more than the file can hold";
-      fail(path, msg.str());
+    if (blocks == 0 && last_size != 0) {
+      refuse("declares no block but a last block of " + std::to_string(last_size) + " bytes");
+    }
+    if (blocks > 0 && (block_size == 0 || last_size > block_size)) {
+      refuse("declares blocks of " + std::to_string(block_size) + " bytes and a last block of " +
+             std::to_string(last_size) + " bytes");
+    }
+    if (static_cast<long double>(blocks) * block_size > 8.0L * max_items) {
+      refuse("declares " + std::to_string(blocks) + " blocks of " + std::to_string(block_size) +
+             " bytes, more data than the file can hold");
+    }
+    const std::vector<std::uint64_t> sizes = read_words(3 + blocks);
+    for (std::size_t b = 3; b < sizes.size(); ++b) {
+      if (sizes[b] > file_size) {
+        refuse("declares a compressed block of " + std::to_string(sizes[b]) + " bytes, more than the file holds");
+      }
     }
   }
 }

@@ -218,13 +218,11 @@ TEST(ImportVtu, HugeCellOffsetsAreRefusedBeforeReading) {
   }
 }
 
-// A compressed array's header gives the number of blocks; VTK 9.1 allocates and
-// zeroes a list of that many sizes before reading on (2^32 - 1 blocks: 16 GB and
-// 45 s for a file of a few hundred bytes). The header is checked against the file.
-TEST(ImportVtu, CompressionHeaderBeyondTheFileIsRefused) {
-  const std::string header = "/////wCAAABgAAAA";  // base64 of UInt32 {2^32 - 1, 32768, 96}
-  const std::string path = write_text(
-      "blocks.vtu",
+// A one-tetrahedron file whose points are zlib-compressed binary data with the
+// given compression header (base64 of UInt32 words) and no valid data after it.
+std::string compressed_points_file(const std::string& name, const std::string& header) {
+  return write_text(
+      name,
       "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
       "header_type=\"UInt32\" compressor=\"vtkZLibDataCompressor\">\n<UnstructuredGrid>\n"
       "<Piece NumberOfPoints=\"4\" NumberOfCells=\"1\">\n<Points>\n"
@@ -234,7 +232,27 @@ TEST(ImportVtu, CompressionHeaderBeyondTheFileIsRefused) {
           "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>\n"
           "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>\n</Cells>\n</Piece>\n"
           "</UnstructuredGrid>\n</VTKFile>\n");
-  expect_import_error(path, {"DataArray \"Points\": its compression header declares 4294967295 blocks of 32768 bytes"});
+}
+
+// A compressed array's header (block count, block size, last block size, then
+// each block's compressed size) is trusted by VTK 9.1: 2^32 - 1 blocks made it
+// allocate and zero 16 GB (45 s) for a file of a few hundred bytes, a block size
+// of 0 divided by zero (SIGFPE), no blocks but a last block read a list it never
+// allocated (SIGSEGV), a last block larger than a block or a compressed size
+// beyond the file allocated gigabytes. Each header is checked against the file.
+TEST(ImportVtu, CompressionHeadersAreCheckedAgainstTheFile) {
+  const std::string points = "DataArray \"Points\": its compression header declares ";
+  // {2^32 - 1, 32768, 96}, {0, 32768, 96}, {1, 0, 96}, {1, 96, 4e9}, {1, 96, 96, 2^31}
+  expect_import_error(compressed_points_file("blocks.vtu", "/////wCAAABgAAAA"),
+                      {points + "4294967295 blocks, more than the file can hold"});
+  expect_import_error(compressed_points_file("no_blocks.vtu", "AAAAAACAAABgAAAA"),
+                      {points + "no block but a last block of 96 bytes"});
+  expect_import_error(compressed_points_file("zero_block_size.vtu", "AQAAAAAAAABgAAAA"),
+                      {points + "blocks of 0 bytes and a last block of 96 bytes"});
+  expect_import_error(compressed_points_file("big_last_block.vtu", "AQAAAGAAAAAAKGvu"),
+                      {points + "blocks of 96 bytes and a last block of 4000000000 bytes"});
+  expect_import_error(compressed_points_file("big_compressed_block.vtu", "AQAAAGAAAABgAAAAAAAAgA=="),
+                      {points + "a compressed block of 2147483648 bytes, more than the file holds"});
 }
 
 // VTK's own diagnostics (a coloured dump of the pipeline on the terminal) are
