@@ -252,28 +252,35 @@ std::optional<long double> largest_word(const std::vector<unsigned char>& bytes,
   return largest;
 }
 
-// The first `n` bytes of base64 text (whitespace skipped), as far as they decode.
-std::string decode_base64_prefix(std::istream& in, std::size_t n) {
+// Up to `n` bytes of base64 data, decoded the way VTK's reader decodes them
+// (vtkBase64InputStream): groups of four characters; '=' is a zero digit except
+// as the group's third or fourth character, where it ends the data after one or
+// two bytes; any other character outside the alphabet ends the data before its
+// group. The header checks below must see exactly the bytes VTK will use.
+std::string decode_base64_like_vtk(std::istream& in, std::size_t n) {
+  const auto digit = [](char c) -> int {
+    if (c >= 'A' && c <= 'Z') return c - 'A';
+    if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+    if (c >= '0' && c <= '9') return c - '0' + 52;
+    if (c == '+') return 62;
+    if (c == '/') return 63;
+    if (c == '=') return 0;
+    return -1;
+  };
   std::string bytes;
-  unsigned bits = 0;
-  int n_bits = 0;
-  char c = 0;
-  while (bytes.size() < n && in.get(c)) {
-    int v = -1;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    else if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    else if (c >= '0' && c <= '9') v = c - '0' + 52;
-    else if (c == '+') v = 62;
-    else if (c == '/') v = 63;
-    else if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
-    else break;  // '=' or anything else ends the prefix
-    bits = (bits << 6) | static_cast<unsigned>(v);
-    n_bits += 6;
-    if (n_bits >= 8) {
-      n_bits -= 8;
-      bytes += static_cast<char>((bits >> n_bits) & 0xFF);
-    }
+  char group[4];
+  while (bytes.size() < n && in.read(group, 4) && in.gcount() == 4) {
+    int d[4];
+    for (int k = 0; k < 4; ++k) d[k] = digit(group[k]);
+    if (d[0] < 0 || d[1] < 0 || d[2] < 0 || d[3] < 0) break;
+    const char decoded[3] = {static_cast<char>((d[0] << 2) | (d[1] >> 4)),
+                             static_cast<char>(((d[1] & 0xF) << 4) | (d[2] >> 2)),
+                             static_cast<char>(((d[2] & 0x3) << 6) | d[3])};
+    const std::size_t count = group[2] == '=' ? 1 : group[3] == '=' ? 2 : 3;
+    bytes.append(decoded, count);
+    if (count < 3) break;
   }
+  if (bytes.size() > n) bytes.resize(n);
   return bytes;
 }
 
@@ -317,6 +324,9 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
       char c = 0;
       while (stream.get(c) && c != '>') {
       }
+      while (stream.get(c) && (c == ' ' || c == '\t' || c == '\n' || c == '\r')) {
+      }
+      stream.unget();
     } else if (std::string(format) == "appended") {
       long long offset = 0;
       if (!element->GetScalarAttribute("offset", offset) || offset < 0 || parser->GetAppendedDataPosition() <= 0) {
@@ -336,7 +346,7 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
         stream.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(stream.gcount(), 0)));
       } else {
-        bytes = decode_base64_prefix(stream, count * word);
+        bytes = decode_base64_like_vtk(stream, count * word);
       }
       std::vector<std::uint64_t> words;
       for (std::size_t k = 0; (k + 1) * word <= bytes.size(); ++k) {
