@@ -45,6 +45,8 @@ asan_options() {
 leak_flag() { case "$1" in scene) echo "-detect_leaks=1" ;; vtu) echo "-detect_leaks=0" ;; esac; }
 
 pids=()
+# An interrupted study stops its fuzzers (and they their workers).
+trap 'kill "${pids[@]}" 2>/dev/null || true' INT TERM
 for t in scene vtu; do
   rm -rf "${run:?}/$t"
   mkdir -p "$run/$t/corpus" "$run/$t/artifacts"
