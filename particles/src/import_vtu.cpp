@@ -284,6 +284,25 @@ std::string decode_base64_like_vtk(std::istream& in, std::size_t n) {
   return bytes;
 }
 
+// Where VTK's reader takes an array's data from (vtkXMLDataReader's
+// ReadArrayValues): the appended data when the element has an offset attribute,
+// whatever its format says (an unparsable offset counts as 0); otherwise inline,
+// binary for format="binary" and ascii for anything else.
+struct ArrayData {
+  enum Kind { Ascii, Binary, Appended } kind;
+  vtkTypeInt64 offset;
+};
+
+ArrayData where_vtk_reads(vtkXMLDataElement* array) {
+  if (array->GetAttribute("offset") != nullptr) {
+    vtkTypeInt64 offset = 0;
+    array->GetScalarAttribute("offset", offset);
+    return {ArrayData::Appended, offset};
+  }
+  const char* format = array->GetAttribute("format");
+  return {format && std::string(format) == "binary" ? ArrayData::Binary : ArrayData::Ascii, 0};
+}
+
 // Compressed binary data start with a header: the number of blocks, the size of a
 // block before compression, that of the last block (0 if it is full), then the
 // compressed size of each block. VTK 9.1 trusts all of it: it allocates and
@@ -303,8 +322,10 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
   std::error_code ec;
   const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
   if (ec) return;
+  // VTK's parser stops at the (first) AppendedData element and decodes its data
+  // as base64 unless it says encoding="raw".
   bool appended_raw = false;
-  if (vtkXMLDataElement* appended = root->FindNestedElementWithName("AppendedData")) {
+  if (vtkXMLDataElement* appended = root->LookupElementWithName("AppendedData")) {
     const char* encoding = appended->GetAttribute("encoding");
     appended_raw = encoding && std::string(encoding) == "raw";
   }
@@ -314,11 +335,12 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
     vtkXMLDataElement* element = pending.back();
     pending.pop_back();
     for (int i = 0; i < element->GetNumberOfNestedElements(); ++i) pending.push_back(element->GetNestedElement(i));
-    const char* format = element->GetAttribute("format");
-    if (element->GetName() == nullptr || std::string(element->GetName()) != "DataArray" || format == nullptr) continue;
+    const std::string name = element->GetName() ? element->GetName() : "";
+    if (name != "DataArray" && name != "Array") continue;
+    const ArrayData data = where_vtk_reads(element);
     bool raw = false;
     stream.clear();
-    if (std::string(format) == "binary") {
+    if (data.kind == ArrayData::Binary) {
       // Inline data start after the opening tag and any whitespace.
       stream.seekg(element->GetXMLByteIndex());
       char c = 0;
@@ -327,12 +349,10 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
       while (stream.get(c) && (c == ' ' || c == '\t' || c == '\n' || c == '\r')) {
       }
       stream.unget();
-    } else if (std::string(format) == "appended") {
-      long long offset = 0;
-      if (!element->GetScalarAttribute("offset", offset) || offset < 0 || parser->GetAppendedDataPosition() <= 0) {
-        continue;
-      }
-      stream.seekg(parser->GetAppendedDataPosition() + offset);
+    } else if (data.kind == ArrayData::Appended) {
+      const vtkTypeInt64 at = parser->GetAppendedDataPosition() + data.offset;
+      if (data.offset < 0 || at < 0) continue;  // the reader cannot seek there
+      stream.seekg(at);
       raw = appended_raw;
     } else {
       continue;
@@ -411,23 +431,15 @@ void check_data(const std::string& path, vtkXMLDataParser* reader_parser, long l
     if (cells == nullptr || !piece->GetScalarAttribute("NumberOfCells", n_cells) || n_cells <= 0) continue;
     vtkXMLDataElement* offsets = cells->FindNestedElementWithNameAndAttribute("DataArray", "Name", "offsets");
     int type = 0;
-    const char* format = offsets ? offsets->GetAttribute("format") : nullptr;
-    if (offsets == nullptr || format == nullptr || !offsets->GetWordTypeAttribute("type", type) ||
-        !is_integer_type(type)) {
-      continue;
-    }
+    if (offsets == nullptr || !offsets->GetWordTypeAttribute("type", type) || !is_integer_type(type)) continue;
     const std::size_t word_size = parser->GetWordTypeSize(type);
     const auto count = static_cast<std::size_t>(n_cells);
     std::vector<unsigned char> bytes(count * word_size);
-    std::size_t read = 0;
-    const std::string how = format;
-    if (how == "ascii" || how == "binary") {
-      read = parser->ReadInlineData(offsets, how == "ascii", bytes.data(), 0, count, type);
-    } else if (how == "appended") {
-      vtkTypeInt64 offset = 0;
-      if (!offsets->GetScalarAttribute("offset", offset)) continue;
-      read = parser->ReadAppendedData(offset, bytes.data(), 0, count, type);
-    }
+    const ArrayData data = where_vtk_reads(offsets);
+    const std::size_t read =
+        data.kind == ArrayData::Appended
+            ? parser->ReadAppendedData(data.offset, bytes.data(), 0, count, type)
+            : parser->ReadInlineData(offsets, data.kind == ArrayData::Ascii, bytes.data(), 0, count, type);
     std::optional<long double> largest;
     switch (type) {
       vtkTemplateMacro(largest = largest_word<VTK_TT>(bytes, std::min(read, count)));
