@@ -1,8 +1,12 @@
 // .vtu import: the only translation unit that sees VTK headers.
 //
-// Everything read from the file is checked before it is used: the grid's cell
-// array (offsets, sizes, types and point ids) and the point coordinates. VTK's
-// own diagnostics are collected while the file is read and folded into the one
+// VTK 9.1's XML reader trusts the sizes a file gives (attributes, cell offsets,
+// compression headers) and allocates, loops or divides by them before checking
+// anything. The importer therefore reads in three steps: the XML is parsed
+// (UpdateInformation) and every size VTK will act on is checked against the file,
+// then VTK reads the data, then everything read is checked before it is used: the
+// grid's cell array (offsets, sizes, types and point ids) and the coordinates.
+// VTK's own diagnostics are collected meanwhile and folded into the one
 // CloudError, so a bad file gives a single message naming it and nothing else on
 // the terminal.
 #include "rkpm/particles/element_geometry.hpp"
