@@ -145,6 +145,7 @@ std::string first_meaningful_line(const std::string& messages) {
 // value that does not parse that way as an integer, or lies outside its range, is
 // refused.
 //   NumberOfComponents of an array: 1 to kMaxComponents
+//   the offset of an array's appended data: 0 to the file's size
 //   the points and the cells of all pieces, and the values of all arrays
 //     (tuples x components): at most kItemsPerFileByte per byte of the file;
 //     even compressed, a real mesh takes well over a byte per 64 values (its
@@ -189,6 +190,10 @@ void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long
     vtkXMLDataElement* element;
     long long tuples;  // tuples of the arrays inside (points or cells of the piece), -1 if not known
   };
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  const long long file_bytes =
+      ec ? 0 : static_cast<long long>(std::min<std::uintmax_t>(size, std::numeric_limits<long long>::max()));
   std::vector<Pending> pending = {{root, -1}};
   long long total_points = 0, total_cells = 0, total_values = 0;
   const auto too_many = [&](const std::string& what, long long count) {
@@ -208,6 +213,8 @@ void check_declared_sizes(const std::string& path, vtkXMLDataElement* root, long
       if ((total_points += std::max(n_points, 0LL)) > max_items) too_many("points", total_points);
       if ((total_cells += std::max(n_cells, 0LL)) > max_items) too_many("cells", total_cells);
     } else if (name == "DataArray" || name == "Array") {
+      // Appended data start at most at the end of the file.
+      integer_attribute(path, element, "offset", 0, file_bytes, 0);
       const long long components = integer_attribute(path, element, "NumberOfComponents", 1, kMaxComponents, 1);
       const long long declared = integer_attribute(path, element, "NumberOfTuples", 0, max_items, -1);
       const long long tuples = declared >= 0 ? declared : item.tuples;
@@ -354,8 +361,8 @@ void check_compression_headers(const std::string& path, vtkXMLDataParser* parser
       }
       stream.unget();
     } else if (data.kind == ArrayData::Appended) {
+      // check_declared_sizes has bounded the offset by the file's size.
       const vtkTypeInt64 at = parser->GetAppendedDataPosition() + data.offset;
-      if (data.offset < 0 || at < 0) continue;  // the reader cannot seek there
       stream.seekg(at);
       raw = appended_raw;
     } else {

@@ -201,6 +201,12 @@ TEST(ImportVtu, AbsurdDeclaredSizesAreRefusedBeforeReading) {
       {"Piece declares NumberOfPoints=\"1000000000000000\""});
   expect_import_error(write_text("cells.vtu", replaced(good, "NumberOfCells=\"1\"", "NumberOfCells=\"-1\"")),
                       {"Piece declares NumberOfCells=\"-1\", expected an integer from 0 to"});
+  // VTK adds the offset to a file position (signed overflow); any offset makes it
+  // read appended data, whatever the format says.
+  expect_import_error(write_text("offset.vtu", replaced(good, "NumberOfComponents=\"3\" format=\"ascii\"",
+                                                        "NumberOfComponents=\"3\" format=\"ascii\" "
+                                                        "offset=\"99999999999999999999\"")),
+                      {"DataArray declares offset=\"99999999999999999999\", expected an integer from 0 to"});
 }
 
 // VTK 9.1 sizes the connectivity by the last cell offset before checking it: at
