@@ -1,11 +1,21 @@
 # Project-wide compile options, applied to every target by linking rkpm_options.
 add_library(rkpm_options INTERFACE)
-target_compile_options(rkpm_options INTERFACE -Wall -Wextra -Wpedantic -Wshadow=local -Wnon-virtual-dtor)
+target_compile_options(rkpm_options INTERFACE -Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor)
 if(RKPM_SANITIZE)
   # -O1 keeps the sanitized Debug build (assertions and debug information on) fast
   # enough to run the whole suite, which includes 30,000-particle clouds.
   target_compile_options(rkpm_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
                          -fno-sanitize-recover=undefined -O1)
+  target_link_options(rkpm_options INTERFACE -fsanitize=address,undefined)
+endif()
+if(RKPM_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "RKPM_FUZZ=ON needs clang (CXX=clang++): libFuzzer is part of clang")
+  endif()
+  # Coverage instrumentation for libFuzzer on every library; the fuzz programs
+  # add -fsanitize=fuzzer (libFuzzer's main) when they link.
+  target_compile_options(rkpm_options INTERFACE -fsanitize=fuzzer-no-link,address,undefined
+                         -fno-omit-frame-pointer -fno-sanitize-recover=undefined -g)
   target_link_options(rkpm_options INTERFACE -fsanitize=address,undefined)
 endif()
 target_link_libraries(rkpm_options INTERFACE OpenMP::OpenMP_CXX Eigen3::Eigen fmt::fmt)

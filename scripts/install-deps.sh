@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rkpm needs to build, test and plot (as root).
 # Every dependency is a Debian package: nothing is downloaded at build time.
+#   install-deps.sh          the build, the tests, the benchmarks and the plots
+#   install-deps.sh --fuzz   also clang and libFuzzer for scripts/fuzz.sh (the
+#                            normal build does not need them)
 set -euo pipefail
+
+fuzz=0
+for arg in "$@"; do
+  case "$arg" in
+    --fuzz) fuzz=1 ;;
+    *) echo "install-deps: unknown option $arg (expected --fuzz)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   build-essential cmake g++ make   # toolchain (g++ 12, cmake 3.25)
@@ -15,6 +26,14 @@ packages=(
   libbenchmark-dev                 # Google Benchmark: bench/
   gnuplot-nox                      # PNG plots of the studies
 )
+if [ "$fuzz" = 1 ]; then
+  packages+=(
+    clang-14                       # the fuzz build's compiler
+    libclang-rt-14-dev             # libFuzzer (-fsanitize=fuzzer), ASan and UBSan runtimes for clang
+    libomp-14-dev                  # OpenMP for clang
+    llvm-14                        # llvm-symbolizer: readable stacks in sanitizer reports
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

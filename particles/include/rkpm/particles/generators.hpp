@@ -58,7 +58,9 @@ Cloud make_shell(const ShellSpec& spec);
 
 // Nodes and cells (VTK_TETRA, VTK_HEXAHEDRON) of an unstructured-grid file (.vtu).
 // Surface: surface (every particle on the body's surface).
-// Throws CloudError naming the file and what was wrong with it.
+// Throws CloudError naming the file and what was wrong with it; VTK's own
+// diagnostics are folded into that message, nothing is printed. Not for concurrent
+// use: while it reads, VTK's process-wide message window is redirected.
 Cloud import_vtu(const std::string& path);
 
 // Analytic references.

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# Study command: fuzzes the scene loader and the .vtu importer with libFuzzer.
+# Usage: scripts/fuzz.sh [SECONDS]   (default 1800 per target; both run side by side)
+#
+# Installs clang and libFuzzer (install-deps.sh --fuzz), builds the two fuzz
+# programs with ASan and UBSan in build-fuzz/, runs each on one core from the seeds
+# and the committed corpus, minimises what they reached into tests/fuzz/corpus/,
+# and prints a report that also replaces the "Last run" section of docs/fuzzing.md.
+# Inputs that crash, hang or exhaust memory are kept in build-fuzz/run/<target>/artifacts/.
+# Exits non-zero if a fuzzer found anything.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+seconds=${1:-1800}
+case "$seconds" in '' | *[!0-9]*) echo "fuzz.sh: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2 ;; esac
+
+bash "$here/scripts/install-deps.sh" --fuzz
+
+build="$here/build-fuzz"
+launcher=()
+if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+echo "== Fuzz build (clang, ASan, UBSan, libFuzzer) in $build"
+CC=clang-14 CXX=clang++-14 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRKPM_FUZZ=ON \
+  -DRKPM_BUILD_TESTS=OFF -DRKPM_BUILD_BENCH=OFF "${launcher[@]}" >/dev/null
+cmake --build "$build" -j"$(nproc)" --target fuzz_scene fuzz_vtu
+
+symbolizer=/usr/lib/llvm-14/bin/llvm-symbolizer
+if [ -x "$symbolizer" ]; then export ASAN_SYMBOLIZER_PATH="$symbolizer"; fi
+export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+fuzz_dir="$here/tests/fuzz"
+run="$build/run"
+
+# Per target: maximum input length and extra options. The .vtu fuzzer runs without
+# leak detection: VTK's reader leaks on some malformed files (see
+# tests/fuzz/known_vtk_leaks.cpp) and telling those leaks apart needs full stacks
+# on every allocation, which costs a factor of ten in speed. test_fuzz_replay checks
+# the minimised corpus for leaks under the sanitized build instead.
+max_len() { case "$1" in scene) echo 4096 ;; vtu) echo 16384 ;; esac; }
+asan_options() {
+  case "$1" in
+    scene) echo "detect_leaks=1" ;;
+    vtu) echo "detect_leaks=0:fast_unwind_on_malloc=1" ;;
+  esac
+}
+leak_flag() { case "$1" in scene) echo "-detect_leaks=1" ;; vtu) echo "-detect_leaks=0" ;; esac; }
+
+pids=()
+# An interrupted study stops its fuzzers (and they their workers).
+trap 'kill "${pids[@]}" 2>/dev/null || true' INT TERM
+for t in scene vtu; do
+  rm -rf "${run:?}/$t"
+  mkdir -p "$run/$t/corpus" "$run/$t/artifacts"
+  # The fuzzer writes into its first directory: give it copies, never the sources.
+  cp "$fuzz_dir/seeds/$t/"* "$run/$t/corpus/"
+  if [ -d "$fuzz_dir/corpus/$t" ]; then cp "$fuzz_dir/corpus/$t/"* "$run/$t/corpus/" 2>/dev/null || true; fi
+  echo "== fuzz_$t for ${seconds} s ($(ls "$run/$t/corpus" | wc -l) starting inputs), log in $run/$t/fuzz.log"
+  ASAN_OPTIONS=$(asan_options $t) nice -n 10 "$build/tests/fuzz/fuzz_$t" \
+    -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 "$(leak_flag $t)" \
+    -max_total_time="$seconds" -max_len="$(max_len $t)" -timeout=10 -rss_limit_mb=2048 \
+    -dict="$fuzz_dir/dict/$t.dict" -artifact_prefix="$run/$t/artifacts/" \
+    "$run/$t/corpus" >"$run/$t/fuzz.log" 2>&1 &
+  pids+=($!)
+done
+status=0
+for pid in "${pids[@]}"; do wait "$pid" || status=$?; done
+[ "$status" = 0 ] || echo "fuzz.sh: a fuzzer exited with status $status (see the logs)" >&2
+
+# Minimise: the corpus keeps only inputs that reach something the seeds do not.
+# Hand-named files (regression inputs for fixed bugs) are kept as they are.
+for t in scene vtu; do
+  merged="$run/$t/merged"
+  rm -rf "$merged" && mkdir -p "$merged"
+  for f in "$fuzz_dir/seeds/$t/"*; do cp "$f" "$merged/seed-$(basename "$f")"; done
+  ASAN_OPTIONS=$(asan_options $t) nice -n 10 "$build/tests/fuzz/fuzz_$t" -merge=1 "$(leak_flag $t)" \
+    -max_len="$(max_len $t)" -timeout=10 -rss_limit_mb=2048 "$merged" "$run/$t/corpus" >"$run/$t/merge.log" 2>&1
+  rm -f "$merged"/seed-*
+  mkdir -p "$fuzz_dir/corpus/$t"
+  find "$fuzz_dir/corpus/$t" -maxdepth 1 -type f -regextype posix-extended -regex '.*/[0-9a-f]{40}' -delete
+  cp "$merged/"* "$fuzz_dir/corpus/$t/" 2>/dev/null || true
+done
+
+# Report from the last status line of each log:
+#   #EXECS: cov: C ft: F corp: N exec/s E oom/timeout/crash: O/T/X time: Ss job: J
+report() {
+  local t=$1 line execs cov ft oom timeouts crashes secs artifacts
+  line=$(grep -E '^#[0-9]+: cov:' "$run/$t/fuzz.log" | tail -n 1 || true)
+  execs=$(sed -E 's/^#([0-9]+):.*/\1/' <<<"$line")
+  cov=$(sed -E 's/.* cov: ([0-9]+).*/\1/' <<<"$line")
+  ft=$(sed -E 's/.* ft: ([0-9]+).*/\1/' <<<"$line")
+  IFS=/ read -r oom timeouts crashes < <(sed -E 's/.*oom\/timeout\/crash: ([0-9]+\/[0-9]+\/[0-9]+).*/\1/' <<<"$line")
+  secs=$(sed -E 's/.* time: ([0-9]+)s.*/\1/' <<<"$line")
+  artifacts=$(ls "$run/$t/artifacts" | wc -l)
+  execs=${execs:-0} secs=${secs:-0}
+  printf '| fuzz_%s | %s s | %s | %s | %s | %s | %s | %s / %s / %s | %s |\n' "$t" "$secs" "$execs" \
+    "$(( execs / (secs > 0 ? secs : 1) ))" "${cov:-?}" "${ft:-?}" \
+    "$(ls "$fuzz_dir/corpus/$t" | wc -l) files, $(du -sk "$fuzz_dir/corpus/$t" | cut -f1) KiB" \
+    "${crashes:-?}" "${timeouts:-?}" "${oom:-?}" "$artifacts"
+}
+table=$(
+  echo "Run of $(date -u +%Y-%m-%d), ${seconds} s per target, both side by side (one core each, ASan + UBSan):"
+  echo
+  echo "| target | time | executions | exec/s | coverage (edges) | features | minimised corpus | crashes / timeouts / OOMs | artifacts |"
+  echo "|---|---|---|---|---|---|---|---|---|"
+  report scene
+  report vtu
+)
+echo
+echo "$table"
+doc="$here/docs/fuzzing.md"
+if [ -f "$doc" ] && grep -q '<!-- fuzz-report:begin -->' "$doc"; then
+  printf '%s\n' "$table" >"$run/report.md"
+  awk -v report="$run/report.md" '
+    /<!-- fuzz-report:end -->/ { skipping = 0 }
+    !skipping { print }
+    /<!-- fuzz-report:begin -->/ { while ((getline line < report) > 0) print line; skipping = 1 }
+  ' "$doc" >"$run/fuzzing.md" && cp "$run/fuzzing.md" "$doc"
+  echo "(written to docs/fuzzing.md)"
+fi
+
+found=$(( $(ls "$run/scene/artifacts" | wc -l) + $(ls "$run/vtu/artifacts" | wc -l) ))
+if [ "$found" -gt 0 ]; then
+  echo "fuzz.sh: $found input(s) crashed, hung or ran out of memory: $run/{scene,vtu}/artifacts/" >&2
+  exit 1
+fi
