@@ -46,7 +46,7 @@ leak_flag() { case "$1" in scene) echo "-detect_leaks=1" ;; vtu) echo "-detect_l
 
 pids=()
 # An interrupted study stops its fuzzers (and they their workers).
-trap 'kill "${pids[@]}" 2>/dev/null || true' INT TERM
+trap 'kill "${pids[@]}" 2>/dev/null; exit 130' INT TERM
 for t in scene vtu; do
   rm -rf "${run:?}/$t"
   mkdir -p "$run/$t/corpus" "$run/$t/artifacts"
@@ -93,7 +93,7 @@ report() {
   execs=${execs:-0} secs=${secs:-0}
   printf '| fuzz_%s | %s s | %s | %s | %s | %s | %s | %s / %s / %s | %s |\n' "$t" "$secs" "$execs" \
     "$(( execs / (secs > 0 ? secs : 1) ))" "${cov:-?}" "${ft:-?}" \
-    "$(ls "$fuzz_dir/corpus/$t" | wc -l) files, $(du -sk "$fuzz_dir/corpus/$t" | cut -f1) KiB" \
+    "$(ls "$fuzz_dir/corpus/$t" | wc -l) files, $(( $(cat "$fuzz_dir/corpus/$t/"* | wc -c) / 1024 )) KiB" \
     "${crashes:-?}" "${timeouts:-?}" "${oom:-?}" "$artifacts"
 }
 table=$(
