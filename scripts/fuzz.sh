@@ -29,6 +29,9 @@ export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 fuzz_dir="$here/tests/fuzz"
 run="$build/run"
+# fuzz_vtu writes each input to a temporary file; a crashing worker leaves its file.
+mkdir -p "$run/tmp"
+export TMPDIR="$run/tmp"
 
 # Per target: maximum input length and extra options. The .vtu fuzzer runs without
 # leak detection: VTK's reader leaks on some malformed files (see
