@@ -47,7 +47,7 @@ Footprint footprint(const sim::Body& b) {
                 bytes(q.owner) + bytes(q.surface_mask) + bytes(q.row_offset) + bytes(q.col) + bytes(q.psi) +
                 (b.rk ? bytes(b.rk->support_radius()) : 0);
   f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
-            bytes(b.mass) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
+            bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
             material_bytes(b.material) + b.force_scatter.bytes();
   if (b.director) {
     const auto& d = *b.director;

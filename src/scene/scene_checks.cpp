@@ -87,6 +87,18 @@ void check_output(Scene& scene) {
   }
 }
 
+// Nested iteration remakes each body's cloud at a coarser resolution: only a generator
+// can do that, an imported mesh cannot be coarsened.
+void check_nested_levels(const Scene& scene) {
+  if (scene.integrator.reals("nested_levels").empty()) return;
+  for (const auto& body : scene.bodies)
+    if (body.generator() == "vtu")
+      throw scene.integrator.error(
+          "nested_levels", fmt::format("[] when a body's cloud is imported (body \"{}\", generator = \"vtu\" at "
+                                       "line {}): only generated clouds can be coarsened",
+                                       body.name(), body.cloud.line("generator")));
+}
+
 }  // namespace
 
 void check_scene(Scene& scene) {
@@ -96,6 +108,7 @@ void check_scene(Scene& scene) {
   }
   for (const auto& term : scene.terms) check_tables(term.params, scene, nullptr);
   check_output(scene);
+  check_nested_levels(scene);
 }
 
 }  // namespace rkpm::scene

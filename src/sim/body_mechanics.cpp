@@ -158,6 +158,18 @@ double mean_shear_modulus(const Body& body) {
   return weighted / volume;
 }
 
+void particle_wave_steps(const Body& body, std::vector<double>& steps) {
+  const auto n = static_cast<Index>(body.F.size());
+  const DirectorField* dir = director_of(body);
+  steps.resize(static_cast<std::size_t>(n));
+  std::visit(
+      [&](const auto& material) {
+#pragma omp parallel for schedule(static)
+        for (Index L = 0; L < n; ++L) steps[L] = body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density);
+      },
+      body.material);
+}
+
 double material_stable_dt(const Body& body) {
   const auto n = static_cast<Index>(body.F.size());
   const DirectorField* dir = director_of(body);
@@ -166,10 +178,20 @@ double material_stable_dt(const Body& body) {
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(min : dt)
         for (Index L = 0; L < n; ++L)
-          dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density));
+          dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density) *
+                                std::sqrt(body.inertia[L] / body.mass[L]));
       },
       body.material);
   return dt;
+}
+
+void scale_inertia(Body& body, double target) {
+  std::vector<double> steps;
+  particle_wave_steps(body, steps);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const double ratio = target / steps[i];
+    body.inertia[i] = body.mass[i] * std::max(1.0, ratio * ratio);
+  }
 }
 
 }  // namespace rkpm::sim

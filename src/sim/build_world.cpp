@@ -170,6 +170,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->spacing = shortest_edges(cloud);
   body->mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) body->mass[i] = body->density * cloud.volume[i];
+  body->inertia = body->mass;
 
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");
@@ -245,6 +246,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.damping = p.real("damping");
   s.relax_force_tol = p.real("relax_force_tol");
   s.relax_velocity_tol = p.real("relax_velocity_tol");
+  s.mass_scaling = p.flag("mass_scaling");
   return s;
 }
 

@@ -19,7 +19,7 @@ namespace {
 //   u64 FNV-1a digest of every byte before it.
 constexpr char kMagic[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', 'T'};
 constexpr char kMagicFormat1[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', '1'};  // positional fields, no version
-constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kFormatVersion = 3;  // 3: the inertia (mass scaling) per body
 
 std::uint64_t fnv1a(const char* data, std::size_t n) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -175,6 +175,7 @@ StateRecord checkpoint_record(const World& world, const Integrator& integrator, 
     r.put_vectors(p + "d", b->d);
     r.put_vectors(p + "v", b->v);
     r.put_vectors(p + "a", b->a);
+    r.put_reals(p + "inertia", b->inertia);
     if (b->director) r.put_vectors(p + "director", b->director->h);
     r.put_reals(p + "constraint_targets", b->constraints.targets());
   }
@@ -245,6 +246,7 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       b->d = r.vectors(p + "d", b->size());
       b->v = r.vectors(p + "v", b->size());
       b->a = r.vectors(p + "a", b->size());
+      b->inertia = r.reals(p + "inertia", b->size());
       if (b->director) b->director->h = r.vectors(p + "director", b->size());
       b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
       update_positions(*b);

@@ -46,7 +46,7 @@ void Integrator::forces_and_accelerations() {
     support_power_ += b.constraints.transform_forces(b.force);
     const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) b.a[i] = b.force[i] / b.mass[i];
+    for (Index i = 0; i < n; ++i) b.a[i] = b.force[i] / b.inertia[i];
   }
   term_power_ = power_of_terms();
 }
@@ -85,7 +85,13 @@ void Integrator::initialize() {
   centre_ = 0.5 * (lo + hi);
   if (settings_.domain_size <= 0.0) settings_.domain_size = 50.0 * (hi - lo).norm();
 
+  for (auto& bp : world_.bodies) bp->inertia = bp->mass;
   forces_and_accelerations();
+  unscaled_stable_dt_ = estimate_stable_dt();
+  if (settings_.mode == Mode::Relax && settings_.mass_scaling) {
+    scale_masses();
+    forces_and_accelerations();
+  }
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
   if (settings_.dt > 0.0) {
@@ -103,6 +109,22 @@ void Integrator::initialize() {
   active_power_ = 0.0;
   check_state();
   update_convergence();
+}
+
+// Mass scaling for relaxation: the target is the median of every particle's own wave step
+// at the start, so at most half the particles get heavier and the step is no longer set
+// by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
+// The median of an even count is the upper middle value: deterministic, no averaging.
+void Integrator::scale_masses() {
+  std::vector<double> all, steps;
+  for (const auto& bp : world_.bodies) {
+    particle_wave_steps(*bp, steps);
+    all.insert(all.end(), steps.begin(), steps.end());
+  }
+  if (all.empty()) return;
+  const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
+  std::nth_element(all.begin(), middle, all.end());
+  for (auto& bp : world_.bodies) scale_inertia(*bp, *middle);
 }
 
 // One step of velocity Verlet (the central-difference scheme with lumped masses) with
@@ -148,7 +170,7 @@ void Integrator::first_kick_and_drift(StepBook& book) {
 #pragma omp parallel for schedule(static) reduction(+ : body_power)
     for (Index i = 0; i < n; ++i) {
       b.v[i] += 0.5 * h * (b.a[i] - c * b.v[i]);
-      body_power += c * b.mass[i] * b.v[i].squaredNorm();
+      body_power += c * b.inertia[i] * b.v[i].squaredNorm();
       b.d[i] += h * b.v[i];
     }
     damping_power += body_power;

@@ -21,7 +21,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Bytes per particle of the run's state beyond the operators: X, d, v, a, x, force
-// (6 x 24), F and P per point (2 x 72), mass, volume, spacing, support radius,
+// (6 x 24), F and P per point (2 x 72), mass, inertia, volume, spacing, support radius,
 // stabilization weight and residual, the boundary quadrature's share, the kd-tree, the
 // director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up.
@@ -38,8 +38,8 @@ constexpr double kFramePointBytes = 25.0 * 8.0;
 constexpr double kFrameElementBytes = 10.0 * 8.0 + 1.0;
 // What the process holds before any body: the libraries (VTK, OpenMP) and the scene.
 constexpr double kProcessBytes = 30e6;
-// A checkpoint: d, v, a and the director per particle.
-constexpr double kCheckpointBytes = 4.0 * 24.0;
+// A checkpoint: d, v, a and the director per particle, and the inertia.
+constexpr double kCheckpointBytes = 4.0 * 24.0 + 8.0;
 // The address space a process maps before its arrays (libraries, thread stacks).
 constexpr double kAddressSpaceBaseline = 1.0e9;
 

@@ -7,6 +7,7 @@
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/checkpoint.hpp"
 #include "rkpm/sim/history.hpp"
+#include "rkpm/sim/nested_iteration.hpp"
 #include "rkpm/sim/output.hpp"
 
 #include <fmt/format.h>
@@ -95,6 +96,20 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       log << fmt::format("error: {}:{}: [output] shape_report = \"{}\": expected the name of a shell body\n",
                          scene.output.file(), scene.output.line("shape_report"), name);
       return kBadInput;
+    }
+  }
+  // Nested iteration: the coarse levels relax before the fine run starts from their state
+  // (a restart resumes the fine run itself).
+  std::vector<LevelRun> levels;
+  if (options.restart.empty()) {
+    try {
+      levels = relax_coarse_levels(scene, *world, log);
+    } catch (const SetupError& e) {
+      log << "error: " << e.what() << "\n";
+      return kBadInput;
+    } catch (const BlowUp& e) {
+      log << "error: " << e.what() << "\n";
+      return kUnstable;
     }
   }
   // The step is known once the integrator has started: the frames a dynamic run writes
@@ -218,6 +233,20 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
   json.set("pvd", series->pvd_path().string());
+  if (!levels.empty()) {
+    io::Json list = io::Json::array();
+    for (const LevelRun& l : levels) {
+      io::Json j = io::Json::object();
+      j.set("factor", l.factor);
+      j.set("particles", static_cast<std::int64_t>(l.particles));
+      j.set("steps", l.steps);
+      j.set("wall_time", l.wall_time);
+      j.set("residual", l.residual);
+      j.set("converged", l.converged);
+      list.push_back(std::move(j));
+    }
+    json.set("nested_levels", std::move(list));
+  }
   if (code != kUnstable && code != kOutputFailed) {
     json.set("energy", energy_json(integrator.measure_energy()));
     json.set("min_J", integrator.min_J());

@@ -18,7 +18,7 @@ double kinetic_energy(const World& world) {
     // on thread timing. (Two threads' parts added to zero commute exactly.)
     double body_ke = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : body_ke)
-    for (Index i = 0; i < n; ++i) body_ke += 0.5 * b.mass[i] * b.v[i].squaredNorm();
+    for (Index i = 0; i < n; ++i) body_ke += 0.5 * b.inertia[i] * b.v[i].squaredNorm();
     ke += body_ke;
   }
   return ke;

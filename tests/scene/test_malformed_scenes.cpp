@@ -151,6 +151,16 @@ std::vector<Malformed> malformed_scenes() {
            "exclusion = 1e-7\n",
        "bad.toml:21: [term] exclusion = 1e-07: expected an exclusion larger than distance = 2e-07 m (particles of one "
        "wall closer than the contact distance would repel at rest)"},
+      // --- relaxation accelerators -----------------------------------------------------
+      {"nested levels in a dynamic run", replaced(kBase, "t_end = 1.0\n", "t_end = 1.0\nnested_levels = [0.5]\n"),
+       "bad.toml:5: [integrator] nested_levels = [0.5]: expected [] unless mode = \"relax\""},
+      {"nested levels out of order",
+       replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nnested_levels = [0.5, 0.25]\n"),
+       "bad.toml:5: [integrator] nested_levels = [0.5, 0.25]: expected factors in increasing order, coarsest first"},
+      {"nested level not coarser", replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nnested_levels = [1.0]\n"),
+       "bad.toml:5: [integrator] nested_levels = [1]: expected"},
+      {"mass scaling in a dynamic run", replaced(kBase, "t_end = 1.0\n", "t_end = 1.0\nmass_scaling = true\n"),
+       "bad.toml:5: [integrator] mass_scaling = true: expected false unless mode = \"relax\""},
       {"vtu cloud whose file does not exist",
        replaced(kBase, kBlockCloud, "generator = \"vtu\"\nfile = \"meshes/none.vtu\""),
        "bad.toml:9: [body.cloud] file = \"meshes/none.vtu\": expected an existing file (resolved to meshes/none.vtu)"},

@@ -206,10 +206,10 @@ TEST(Checkpoint, AnotherFormatVersionIsRefusedWithExitCode2) {
   const fs::path dir = testing::fresh_dir("checkpoint_version");
   const fs::path checkpoint = cube_checkpoint(dir);
   std::string bytes = read_text(checkpoint);
-  const std::uint32_t version = 3;
+  const std::uint32_t version = 2;  // before the inertia (mass scaling) was saved
   std::memcpy(&bytes[8], &version, sizeof version);  // after the 8-byte magic
-  write_text(dir / "v3.bin", bytes);
-  expect_refused(dir, dir / "v3.bin", "checkpoint format version 3; this build reads version 2");
+  write_text(dir / "v2.bin", bytes);
+  expect_refused(dir, dir / "v2.bin", "checkpoint format version 2; this build reads version 3");
   // The format before versions and names: positional fields.
   std::string old = read_text(checkpoint);
   old[7] = '1';

@@ -21,6 +21,7 @@ std::unique_ptr<World> point_masses(std::size_t n, double mass = 1.0) {
   b->name = "points";
   b->cloud.X.assign(n, Vec3::Zero());
   b->mass.assign(n, mass);
+  b->inertia = b->mass;
   for (auto* field : {&b->d, &b->v, &b->a, &b->x, &b->force}) field->assign(n, Vec3::Zero());
   world->bodies.push_back(std::move(b));
   return world;
@@ -156,7 +157,7 @@ TEST(Fire, RelaxesAnAnisotropicQuadraticWell) {
   auto forces = [&] {
     for (std::size_t i = 0; i < n; ++i) {
       b.force[i] = -k[i] * b.d[i];
-      b.a[i] = b.force[i] / b.mass[i];
+      b.a[i] = b.force[i] / b.inertia[i];
     }
   };
   forces();

@@ -66,7 +66,9 @@ struct Body {
   rk::NodalInterpolation interpolation;     // Psi_I(X_J)
   rk::Stabilization stabilization;          // removes the spurious modes of nodal integration
   double stabilization_energy = 0.0;        // at the last force evaluation [J]
-  std::vector<double> mass;                 // lumped: rho0 V_I [kg]
+  std::vector<double> mass;                 // lumped: rho0 V_I [kg]; what gravity and centroids weigh
+  std::vector<double> inertia;              // the mass the integrator moves [kg]: = mass, or heavier where
+                                            // a relaxation scales it (scale_inertia)
   std::vector<double> spacing;              // shortest mesh edge at each particle [m]
 
   std::vector<Vec3> d, v, a;                // generalized displacement, velocity, acceleration
@@ -130,7 +132,18 @@ double shear_modulus(const Body& body, Index L);
 // substrate it does not depend on which particle comes first.
 double mean_shear_modulus(const Body& body);
 
-// Largest stable time step of the body's material: safety * min_I spacing_I / c_I.
+// Largest stable time step of the body's material: min_I spacing_I / c_I sqrt(inertia_I / mass_I)
+// (the particle's own wave step, lengthened by its mass scaling).
 double material_stable_dt(const Body& body);
+
+// Each particle's own wave step spacing_I / c_I at the current state, without mass scaling [s].
+void particle_wave_steps(const Body& body, std::vector<double>& steps);
+
+// Mass scaling (relaxation only: the masses of a static problem are free): every particle
+// whose wave step is below `target` gets the inertia mass_I (target / step_I)^2, so that
+// its own step reaches the target; the others keep their mass. Dynamic relaxation in the
+// sense of Underwood (1983): the equilibrium does not depend on the masses, the number of
+// steps to reach it does.
+void scale_inertia(Body& body, double target);
 
 }  // namespace rkpm::sim

@@ -24,6 +24,7 @@ struct IntegratorSettings {
   double damping = 0.0;          // mass-proportional damping coefficient [1/s]
   double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
+  bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
 };
@@ -74,6 +75,8 @@ class Integrator {
   // The step was clamped to the stable estimate (a warning for the user).
   bool dt_clamped() const { return dt_clamped_; }
   double min_J() const { return min_J_; }
+  // The stable step at the start before mass scaling (= stable_dt() at the start without it).
+  double unscaled_stable_dt() const { return unscaled_stable_dt_; }
 
   // Checkpointing: the integrator's own state as named fields (load_state throws
   // StateError naming a missing or mis-sized field).
@@ -101,6 +104,7 @@ class Integrator {
   void step_size_policy();
 
   double estimate_stable_dt() const;
+  void scale_masses();
   double damping() const;
   double stored_energy();
   double power_of_terms() const;
@@ -115,6 +119,7 @@ class Integrator {
   double term_power_ = 0.0, active_power_ = 0.0, support_power_ = 0.0;
   double residual_ = 0.0, kinetic_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
+  double unscaled_stable_dt_ = 0.0;  // the stable step before mass scaling (for the report)
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
   StepBook book_;

@@ -31,6 +31,13 @@ void check_integrator(ParamSet& p) {
   if (p.has("t_end") && p.real("dt") > p.real("t_end")) {
     throw p.error("dt", "a time step no larger than t_end = " + format_value(p.real("t_end")) + " s");
   }
+  if (p.flag("mass_scaling") && p.choice("mode") != "relax")
+    throw p.error("mass_scaling", "false unless mode = \"relax\": a dynamic run's masses are physical");
+  const auto& levels = p.reals("nested_levels");
+  if (!levels.empty() && p.choice("mode") != "relax")
+    throw p.error("nested_levels", "[] unless mode = \"relax\": coarse levels warm-start a relaxation");
+  for (std::size_t i = 1; i < levels.size(); ++i)
+    if (!(levels[i] > levels[i - 1])) throw p.error("nested_levels", "factors in increasing order, coarsest first");
 }
 
 ParamTable integrator_section() {
@@ -61,6 +68,17 @@ ParamTable integrator_section() {
                 "of mu V summed over the bodies (shear modulus times volume)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
+      ParamSpec::boolean("mass_scaling").defaults(false)
+          .help("relax mode: mass scaling. Particles whose own stable step (spacing over wave speed) is "
+                "below the median over the scene's particles are made heavier until it reaches the median, "
+                "so that a few short edges do not set the step of all (the equilibrium does not depend on "
+                "the masses; docs/relaxation.md says when it pays). Not allowed in dynamic mode, where the "
+                "masses are physical."),
+      ParamSpec::real_list("nested_levels", "-").greater_than(0).less_than(1).defaults(std::vector<double>{})
+          .help("relax mode: nested iteration. Resolution factors of coarser clouds, coarsest first "
+                "(0.5 = half the cells along each direction; a shell keeps its layers): the scene is "
+                "relaxed on each in turn, each level starting from the one before carried over by the RK "
+                "approximation, and the last starts the run on the scene's own cloud. Generated clouds only."),
   };
   t.finish = check_integrator;
   return t;

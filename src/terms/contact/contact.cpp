@@ -167,7 +167,7 @@ double Contact::stable_dt(const World&) const {
       const double r2 = (points_[0][i] - points_[1][j]).squaredNorm();
       if (r2 >= rc2) continue;
       const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
-      g += kij * (1.0 / a_.mass[i] + 1.0 / std::sqrt(a_.mass[i] * b_.mass[j]));
+      g += kij * (1.0 / a_.inertia[i] + 1.0 / std::sqrt(a_.inertia[i] * b_.inertia[j]));
     }
     row_a[i] = g;
   }
@@ -183,7 +183,7 @@ double Contact::stable_dt(const World&) const {
       const double r2 = (points_[0][i] - points_[1][j]).squaredNorm();
       if (r2 >= rc2) continue;
       const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
-      g += kij * (1.0 / b_.mass[j] + 1.0 / std::sqrt(a_.mass[i] * b_.mass[j]));
+      g += kij * (1.0 / b_.inertia[j] + 1.0 / std::sqrt(a_.inertia[i] * b_.inertia[j]));
     }
     row_b[j] = g;
   }

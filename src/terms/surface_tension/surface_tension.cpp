@@ -117,7 +117,7 @@ double SurfaceTension::stable_dt(const World&) const {
   }
   double omega2 = 0.0;
   for (std::size_t i = 0; i < row.size(); ++i)
-    if (row[i] > 0.0) omega2 = std::max(omega2, row[i] / body_.mass[i]);
+    if (row[i] > 0.0) omega2 = std::max(omega2, row[i] / body_.inertia[i]);
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 

@@ -116,13 +116,13 @@ double WallContact::stable_dt(const World&) const {
   const auto n = static_cast<Index>(particles_.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(max : omega2)
   for (Index i = 0; i < n; ++i) {
-    const double mi = body_.mass[particles_[i]];
+    const double mi = body_.inertia[particles_[i]];
     double g = 0.0;
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
       const Index j = partner[k];
       if (excluded(i, j)) continue;
       const double r = std::min((points_[i] - points_[j]).norm(), lj_.s0);
-      g += pair_energy_scale(i, j) * lj_.stiffness(r) * (1.0 / mi + 1.0 / std::sqrt(mi * body_.mass[particles_[j]]));
+      g += pair_energy_scale(i, j) * lj_.stiffness(r) * (1.0 / mi + 1.0 / std::sqrt(mi * body_.inertia[particles_[j]]));
     }
     omega2 = std::max(omega2, g);
   }

@@ -15,6 +15,7 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   const std::size_t n = X.size();
   body->mass.resize(n);
   for (std::size_t i = 0; i < n; ++i) body->mass[i] = density * volume[i];
+  body->inertia = body->mass;
   body->d.assign(n, Vec3::Zero());
   body->v.assign(n, Vec3::Zero());
   body->a.assign(n, Vec3::Zero());

@@ -1,0 +1,42 @@
+// Nested iteration for relaxation (docs/relaxation.md): the scene is relaxed on
+// coarser clouds first, each level warm-starting the next, so that the fine cloud
+// starts near its equilibrium and its own relaxation only has to settle what the
+// coarse clouds could not resolve.
+#pragma once
+
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/world.hpp"
+
+#include <cstdint>
+#include <iosfwd>
+#include <vector>
+
+namespace rkpm::sim {
+
+// What one coarse level cost and where it stopped.
+struct LevelRun {
+  double factor = 0.0;          // resolution factor of [integrator] nested_levels
+  std::size_t particles = 0;
+  std::int64_t steps = 0;       // relaxation steps = force evaluations after the first
+  double wall_time = 0.0;       // set-up, relaxation and the transfer to the next level [s]
+  double residual = 0.0;        // at the level's end (the relaxation's force measure)
+  bool converged = false;
+};
+
+// Carries the state of `from` to `to` (the same scene at another resolution; bodies
+// matched by position in the list): each particle of `to` takes the displacement
+// u_h(X_J) = sum_I Psi_I(X_J) d_I of the body it corresponds to, its RK
+// approximation evaluated at the particle's reference position, and the director
+// interpolated the same way and renormalised; velocities are zero. The supports'
+// prescribed values are imposed afterwards. Throws SetupError when a particle of `to`
+// lies outside the reach of `from`'s approximation.
+void carry_state(const World& from, World& to);
+
+// Relaxes the scene on each level of [integrator] nested_levels, coarsest first, and
+// carries the last level's state into `world` (built from the scene itself). Returns
+// one record per level; writes one line per level to `log`. A level that does not
+// converge within max_steps still hands on its state (the fine run decides
+// convergence); a level that blows up throws BlowUp, its message naming the level.
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log);
+
+}  // namespace rkpm::sim

@@ -1,0 +1,102 @@
+#include "rkpm/sim/nested_iteration.hpp"
+
+#include "rkpm/scene/resolution.hpp"
+#include "rkpm/sim/build.hpp"
+#include "rkpm/sim/integrator.hpp"
+
+#include <fmt/format.h>
+
+#include <atomic>
+#include <chrono>
+#include <ostream>
+
+namespace rkpm::sim {
+
+namespace {
+
+// One body's state at the other body's particles (see carry_state).
+void carry_body(const Body& from, Body& to) {
+  const auto n = static_cast<Index>(to.size());
+  const bool director = from.director.has_value() && to.director.has_value();
+  std::atomic<bool> failed{false};
+#pragma omp parallel
+  {
+    rk::ShapeValues sv;
+#pragma omp for schedule(dynamic, 256)
+    for (Index J = 0; J < n; ++J) {
+      if (!from.rk->evaluate(to.cloud.X[J], sv, false)) {
+        failed = true;
+        continue;
+      }
+      Vec3 u = Vec3::Zero(), h = Vec3::Zero();
+      for (std::size_t k = 0; k < sv.ids.size(); ++k) {
+        u += sv.psi[k] * from.d[sv.ids[k]];
+        if (director) h += sv.psi[k] * from.director->h[sv.ids[k]];
+      }
+      to.d[J] = u;
+      to.v[J] = Vec3::Zero();
+      // A director that interpolates to (nearly) nothing, where neighbours point opposite
+      // ways, keeps the fine cloud's own initial value.
+      if (director && h.norm() > 1e-3) to.director->h[J] = h.normalized();
+    }
+  }
+  if (failed) {
+    rk::ShapeValues sv;
+    for (Index J = 0; J < n; ++J) try {
+        from.rk->evaluate_or_throw(to.cloud.X[J], sv, false,
+                                   fmt::format("particle {} of the finer cloud of body '{}'", J, to.name));
+      } catch (const rk::ApproximationError& e) {
+        throw SetupError(fmt::format("nested iteration: body '{}' ({} particles) cannot carry its state to the "
+                                     "cloud of {} particles: {}",
+                                     from.name, from.size(), to.size(), e.what()));
+      }
+  }
+  to.constraints.impose(to.d, to.v);
+  update_positions(to);
+}
+
+}  // namespace
+
+void carry_state(const World& from, World& to) {
+  if (from.bodies.size() != to.bodies.size())
+    throw std::logic_error("carry_state: the two worlds have different body lists");
+  for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*from.bodies[b], *to.bodies[b]);
+}
+
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log) {
+  using Clock = std::chrono::steady_clock;
+  const auto& factors = scene.integrator.reals("nested_levels");
+  std::vector<LevelRun> runs;
+  std::unique_ptr<World> previous;
+  for (std::size_t l = 0; l < factors.size(); ++l) {
+    const auto start = Clock::now();
+    const scene::Scene level_scene = scene::at_resolution(scene, factors[l]);
+    std::unique_ptr<World> level = build_world(level_scene);
+    if (previous) carry_state(*previous, *level);
+    Integrator integrator(*level, integrator_settings(level_scene));
+    const std::int64_t max_steps = level_scene.integrator.integer("max_steps");
+    try {
+      integrator.initialize();
+      while (!(level->step > 0 && integrator.converged()) && level->step < max_steps) integrator.step();
+    } catch (const BlowUp& e) {
+      throw BlowUp(fmt::format("nested level {} (factor {}, {} particles): {}", l + 1, factors[l],
+                               level->particle_count(), e.what()));
+    }
+    previous = std::move(level);
+    LevelRun run;
+    run.factor = factors[l];
+    run.particles = previous->particle_count();
+    run.steps = previous->step;
+    run.residual = integrator.residual();
+    run.converged = integrator.converged();
+    if (l + 1 == factors.size()) carry_state(*previous, world);
+    run.wall_time = std::chrono::duration<double>(Clock::now() - start).count();
+    log << fmt::format("nested level {}/{}: factor {}, {} particles, {} after {} steps (residual {:.2e}), {:.1f} s\n",
+                       l + 1, factors.size(), run.factor, run.particles,
+                       run.converged ? "converged" : "not converged", run.steps, run.residual, run.wall_time);
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+}  // namespace rkpm::sim

@@ -1,0 +1,207 @@
+// The relaxation accelerators of docs/relaxation.md: nested iteration (the scene at a
+// coarser resolution, the state carried to the finer cloud by the RK approximation) and
+// mass scaling. Both must reach the same equilibrium as plain FIRE: the masses and the
+// starting point of a static problem change the path, not the answer.
+#include "rkpm/scene/resolution.hpp"
+#include "rkpm/sim/nested_iteration.hpp"
+#include "sim_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace rkpm::sim {
+namespace {
+
+// A jittered neo-Hookean block on rollers under tension on every face: a static
+// problem without rigid motions, so two relaxations can be compared particle by particle.
+const std::string kBlockOnRollers = R"([scene]
+name = "nested"
+[integrator]
+mode = "relax"
+relax_force_tol = 1e-7
+relax_velocity_tol = 1e-12
+max_steps = 200000
+nested_levels = {levels}
+mass_scaling = {mass_scaling}
+[[body]]
+name = "block"
+density = 1000
+[body.cloud]
+generator = "block"
+size = [1, 0.6, 0.6]
+cells = [10, 6, 6]
+jitter = 0.1
+[body.material]
+model = "neo_hookean"
+mu = 1000
+lambda = 4000
+[[body.boundary]]
+surface = "xmin"
+axes = "x"
+[[body.boundary]]
+surface = "ymin"
+axes = "y"
+[[body.boundary]]
+surface = "zmin"
+axes = "z"
+[[term]]
+type = "surface_pressure"
+body = "block"
+surface = "all"
+pressure = -300
+)";
+
+std::string block_scene(const std::string& levels, bool mass_scaling) {
+  return testing::with(testing::with(kBlockOnRollers, "levels", levels), "mass_scaling",
+                       mass_scaling ? "true" : "false");
+}
+
+struct Relaxation {
+  std::vector<Vec3> u;       // physical displacement at the particles
+  std::int64_t steps = 0;    // on the scene's own cloud
+  std::int64_t coarse_steps = 0;
+  bool converged = false;
+};
+
+Relaxation relax(const std::string& toml) {
+  auto sw = testing::build_from_text(toml);
+  std::ostringstream log;
+  Relaxation r;
+  for (const LevelRun& level : relax_coarse_levels(sw.scene, *sw.world, log)) r.coarse_steps += level.steps;
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  while (sw.world->step < 200000 && !(r.converged = integrator.converged())) integrator.step();
+  r.steps = sw.world->step;
+  physical_displacement(*sw.world->bodies.front(), r.u);
+  return r;
+}
+
+// max_I |a_I - b_I| / max_I |b_I|.
+double relative_difference(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  double diff = 0.0, scale = 0.0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    diff = std::max(diff, (a[i] - b[i]).norm());
+    scale = std::max(scale, b[i].norm());
+  }
+  return diff / scale;
+}
+
+TEST(NestedIteration, TheSceneAtAnotherResolutionScalesEveryGeneratorsCellCounts) {
+  const auto sw = testing::build_from_text(block_scene("[0.5]", false));
+  const scene::Scene half = scene::at_resolution(sw.scene, 0.5);
+  EXPECT_EQ(half.bodies[0].cloud.int3("cells"), (scene::Int3{5, 3, 3}));
+  EXPECT_TRUE(half.integrator.reals("nested_levels").empty()) << "a level must not nest levels of its own";
+  EXPECT_EQ(sw.scene.bodies[0].cloud.int3("cells"), (scene::Int3{10, 6, 6})) << "the scene itself is unchanged";
+  EXPECT_EQ(scene::at_resolution(sw.scene, 0.01).bodies[0].cloud.int3("cells"), (scene::Int3{1, 1, 1}));
+
+  const std::string shell = R"([scene]
+name = "shell"
+[integrator]
+mode = "relax"
+[[body]]
+name = "cell"
+[body.cloud]
+generator = "shell"
+face_cells = 32
+layers = 5
+[body.material]
+model = "neo_hookean"
+mu = 1000
+lambda = 4000
+[[body]]
+name = "ball"
+[body.cloud]
+generator = "sphere"
+center = [0, 0, 1e-5]
+radius = 2e-6
+cells = 16
+[body.material]
+model = "neo_hookean"
+mu = 1000
+lambda = 4000
+)";
+  const scene::Scene s = scene::parse_scene(shell, "shell.toml");
+  const scene::Scene coarse = scene::at_resolution(s, 0.375);
+  EXPECT_EQ(coarse.bodies[0].cloud.integer("face_cells"), 12);
+  EXPECT_EQ(coarse.bodies[0].cloud.integer("layers"), 5) << "a shell keeps its layers: they are part of the model";
+  EXPECT_EQ(coarse.bodies[1].cloud.integer("cells"), 6);
+  EXPECT_EQ(scene::at_resolution(s, 0.01).bodies[0].cloud.integer("face_cells"), 2);
+  EXPECT_EQ(scene::at_resolution(s, 0.01).bodies[1].cloud.integer("cells"), 2);
+}
+
+// The linear RK basis reproduces a linear field exactly, so a linear displacement of
+// the coarse cloud arrives on the fine cloud exactly, whatever the two clouds are.
+TEST(NestedIteration, CarryingTheStateReproducesALinearDisplacementField) {
+  testing::ScopedThreads one(1);
+  auto fine = testing::build_from_text(block_scene("[0.5]", false));
+  auto coarse = build_world(scene::at_resolution(fine.scene, 0.5));
+  const Mat3 A = (Mat3() << 0.02, -0.01, 0.005, 0.003, -0.015, 0.01, 0.0, 0.007, 0.012).finished();
+  const Vec3 b(1e-3, -2e-3, 5e-4);
+  Body& from = *coarse->bodies[0];
+  for (std::size_t I = 0; I < from.size(); ++I) from.d[I] = A * from.cloud.X[I] + b;
+  Body& to = *fine.world->bodies[0];
+  to.constraints = EssentialBC();  // compare the carried field itself, before supports act
+  ASSERT_GT(to.size(), 2 * from.size());
+  carry_state(*coarse, *fine.world);
+  double worst = 0.0;
+  for (std::size_t J = 0; J < to.size(); ++J) {
+    worst = std::max(worst, (to.d[J] - (A * to.cloud.X[J] + b)).norm());
+    EXPECT_EQ(to.v[J], Vec3::Zero());
+    EXPECT_EQ(to.x[J], to.cloud.X[J] + to.d[J]);
+  }
+  std::printf("linear field carried from %zu to %zu particles: worst error %.2e m\n", from.size(), to.size(), worst);
+  EXPECT_LT(worst, 1e-13);
+}
+
+// The issue's criterion for a faster route: its final displacements agree with a
+// tight-tolerance FIRE run to 1e-3 of the largest displacement.
+TEST(NestedIteration, NestedLevelsAndMassScalingReachThePlainFireEquilibrium) {
+  testing::ScopedThreads one(1);
+  const Relaxation plain = relax(block_scene("[]", false));
+  const Relaxation nested = relax(block_scene("[0.5]", false));
+  const Relaxation scaled = relax(block_scene("[]", true));
+  const Relaxation both = relax(block_scene("[0.3, 0.6]", true));
+  std::printf("steps on the 10x6x6 cloud: plain FIRE %lld; after a 5x3x3 level (%lld steps) %lld; mass scaling "
+              "%lld; two levels (%lld steps) and mass scaling %lld\n",
+              static_cast<long long>(plain.steps), static_cast<long long>(nested.coarse_steps),
+              static_cast<long long>(nested.steps), static_cast<long long>(scaled.steps),
+              static_cast<long long>(both.coarse_steps), static_cast<long long>(both.steps));
+  ASSERT_TRUE(plain.converged && nested.converged && scaled.converged && both.converged);
+  EXPECT_GT(nested.coarse_steps, 0);
+  EXPECT_LT(relative_difference(nested.u, plain.u), 1e-3);
+  EXPECT_LT(relative_difference(scaled.u, plain.u), 1e-3);
+  EXPECT_LT(relative_difference(both.u, plain.u), 1e-3);
+}
+
+// Mass scaling lifts every particle's own step to the median and leaves the others.
+TEST(MassScaling, EveryParticleReachesTheMedianStepAndNoneGetsLighter) {
+  testing::ScopedThreads one(1);
+  auto sw = testing::build_from_text(block_scene("[]", true));
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  const Body& b = *sw.world->bodies[0];
+  std::vector<double> steps;
+  particle_wave_steps(b, steps);
+  std::vector<double> sorted = steps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  std::size_t unchanged = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    ASSERT_GE(b.inertia[i], b.mass[i]);
+    if (b.inertia[i] == b.mass[i]) {
+      ++unchanged;
+      EXPECT_GE(steps[i], median);
+    } else {
+      EXPECT_NEAR(steps[i] * std::sqrt(b.inertia[i] / b.mass[i]), median, 1e-12 * median);
+    }
+  }
+  EXPECT_GE(unchanged, b.size() / 2);
+  EXPECT_NEAR(material_stable_dt(b), median, 1e-12 * median);
+  EXPECT_GT(integrator.stable_dt(), integrator.unscaled_stable_dt());
+}
+
+}  // namespace
+}  // namespace rkpm::sim
