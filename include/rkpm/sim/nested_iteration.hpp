@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <vector>
 
 namespace rkpm::sim {
@@ -37,6 +38,8 @@ void carry_state(const World& from, World& to);
 // one record per level; writes one line per level to `log`. A level that does not
 // converge within max_steps still hands on its state (the fine run decides
 // convergence); a level that blows up throws BlowUp, its message naming the level.
-std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log);
+// `keep_last`, if given, receives the last (finest) coarse level's world.
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
+                                          std::unique_ptr<World>* keep_last = nullptr);
 
 }  // namespace rkpm::sim
