@@ -63,8 +63,7 @@ void carry_state(const World& from, World& to) {
   for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*from.bodies[b], *to.bodies[b]);
 }
 
-std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
-                                          std::unique_ptr<World>* keep_last) {
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log) {
   using Clock = std::chrono::steady_clock;
   const auto& factors = scene.integrator.reals("nested_levels");
   std::vector<LevelRun> runs;
@@ -97,7 +96,6 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
                        run.converged ? "converged" : "not converged", run.steps, run.residual, run.wall_time);
     runs.push_back(run);
   }
-  if (keep_last) *keep_last = std::move(previous);
   return runs;
 }
 

@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <iosfwd>
-#include <memory>
 #include <vector>
 
 namespace rkpm::sim {
@@ -38,8 +37,6 @@ void carry_state(const World& from, World& to);
 // one record per level; writes one line per level to `log`. A level that does not
 // converge within max_steps still hands on its state (the fine run decides
 // convergence); a level that blows up throws BlowUp, its message naming the level.
-// `keep_last`, if given, receives the last (finest) coarse level's world.
-std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
-                                          std::unique_ptr<World>* keep_last = nullptr);
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log);
 
 }  // namespace rkpm::sim
