@@ -1,6 +1,9 @@
 # Project-wide compile options, applied to every target by linking rkpm_options.
 add_library(rkpm_options INTERFACE)
-target_compile_options(rkpm_options INTERFACE -Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor)
+# The warnings are the project's own: a program built against the installed library
+# does not inherit them.
+target_compile_options(rkpm_options INTERFACE
+  $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor>)
 if(RKPM_SANITIZE)
   # -O1 keeps the sanitized Debug build (assertions and debug information on) fast
   # enough to run the whole suite, which includes 30,000-particle clouds.

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # README command (b): install what is missing, build, run the whole test suite twice:
 # an optimised Release build, then a Debug build under AddressSanitizer and
-# UndefinedBehaviorSanitizer. Exits non-zero if anything fails.
+# UndefinedBehaviorSanitizer; between the two, install the Release build into
+# build/install and build and run examples/embedding against it. Exits non-zero if
+# anything fails.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 bash "$here/scripts/install-deps.sh"
@@ -14,6 +16,13 @@ echo "== Release build and tests"
 cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$here/build" -j"$jobs"
 ctest --test-dir "$here/build" --output-on-failure -j"$jobs"
+
+echo "== Installed library: examples/embedding built against 'cmake --install' and run"
+rm -rf "$here/build/install" "$here/build/embedding"
+cmake --install "$here/build" --prefix "$here/build/install" >/dev/null
+cmake -S "$here/examples/embedding" -B "$here/build/embedding" -DCMAKE_PREFIX_PATH="$here/build/install" >/dev/null
+cmake --build "$here/build/embedding" -j"$jobs"
+"$here/build/embedding/embed_rkpm"
 
 if [ "${RKPM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== Debug build under AddressSanitizer + UndefinedBehaviorSanitizer and tests"
