@@ -19,6 +19,7 @@ packages=(
   libeigen3-dev                    # Eigen 3.4: small dense algebra, sparse LU
   libnanoflann-dev                 # nanoflann 1.4.3: kd-trees for neighbours and contact pairs
   libvtk9-dev                      # VTK 9.1: .vtu/.pvd output and .vtu import
+  libgmsh-dev                      # Gmsh 4.8 C++ API: .msh import and .geo meshing
   libtomlplusplus-dev              # toml++ 3.3: scene files
   libcli11-dev                     # CLI11: command line
   libfmt-dev                       # fmt: messages

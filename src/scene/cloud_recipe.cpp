@@ -34,6 +34,8 @@ CloudRecipe cloud_recipe(const BodySpec& body) {
     return spec;
   }
   if (generator == "vtu") return VtuImport{body.cloud_file, c.real("scale")};
+  if (generator == "gmsh") return particles::GmshImportSpec{body.cloud_file, c.real("scale"),
+                                                            c.has("mesh_size") ? c.real("mesh_size") : 0.0};
   throw std::logic_error("cloud_recipe: generator \"" + generator + "\" is registered but has no recipe");
 }
 

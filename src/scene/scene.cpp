@@ -5,6 +5,7 @@
 namespace rkpm::scene {
 
 const std::vector<std::string>& BodySpec::surfaces() const {
+  if (!file_surfaces.empty()) return file_surfaces;
   return ParamRegistry::instance().variant("body.cloud", generator())->surfaces;
 }
 

@@ -92,11 +92,11 @@ void check_output(Scene& scene) {
 void check_nested_levels(const Scene& scene) {
   if (scene.integrator.reals("nested_levels").empty()) return;
   for (const auto& body : scene.bodies)
-    if (body.generator() == "vtu")
+    if (body.generator() == "vtu" || body.generator() == "gmsh")
       throw scene.integrator.error(
-          "nested_levels", fmt::format("[] when a body's cloud is imported (body \"{}\", generator = \"vtu\" at "
+          "nested_levels", fmt::format("[] when a body's cloud is imported (body \"{}\", generator = \"{}\" at "
                                        "line {}): only generated clouds can be coarsened",
-                                       body.name(), body.cloud.line("generator")));
+                                       body.name(), body.generator(), body.cloud.line("generator")));
 }
 
 }  // namespace

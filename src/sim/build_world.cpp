@@ -221,6 +221,7 @@ particles::Cloud build_cloud(const scene::BodySpec& spec) {
                           }
                           return c;
                         },
+                        [](const particles::GmshImportSpec& s) { return particles::import_gmsh(s); },
                     },
                     scene::cloud_recipe(spec));
 }

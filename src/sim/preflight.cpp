@@ -2,6 +2,7 @@
 
 #include "rkpm/common/types.hpp"
 #include "rkpm/particles/generators.hpp"
+#include "rkpm/scene/cloud_recipe.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -123,6 +124,17 @@ BodyEstimate estimate_body(const scene::BodySpec& spec) {
     // The cubed sphere's edges near its cube corners are the longest.
     grid.longest_edge = std::max(1.4 * in_plane, through);
     e.size_key = fmt::format("{} and layers", key_at(c, "face_cells"));
+  } else if (e.generator == "gmsh") {
+    // A Gmsh file: its nodes (.msh) or a bound from its bounding box and mesh size
+    // (.geo); spacing unknown, as for a .vtu below.
+    const auto recipe = std::get<particles::GmshImportSpec>(scene::cloud_recipe(spec));
+    e.particles = particles::gmsh_particle_estimate(recipe);
+    e.elements = 6.0 * e.particles;
+    grid.spacing = Vec3::Ones();
+    grid.extent = Vec3::Constant(std::numeric_limits<double>::infinity());
+    grid.longest_edge = 1.0;
+    e.size_key = fmt::format("{} (\"{}\")", key_at(c, spec.cloud.has("mesh_size") ? "mesh_size" : "file"),
+                             spec.cloud_file);
   } else {
     // An imported mesh: its declared points; its spacing is unknown here, so the rows
     // are taken as those of a uniform cloud (support^3 (4/3) pi particles).

@@ -80,7 +80,7 @@ std::vector<Malformed> malformed_scenes() {
       // --- choices and required keys ----------------------------------------------
       {"misspelt generator", replaced(kBase, "generator = \"block\"", "generator = \"blok\""),
        "bad.toml:8: [body.cloud] generator = \"blok\": expected one of \"block\", \"sphere\", \"shell\", "
-       "\"vtu\" (did you mean \"block\"?)"},
+       "\"vtu\", \"gmsh\" (did you mean \"block\"?)"},
       {"unknown term type", kBase + term + "type = \"gravity\"\n",
        "bad.toml:16: [term] type = \"gravity\": expected one of \"body_force\", \"surface_pressure\", "
        "\"volume_constraint\", \"surface_tension\", \"contact\""},

@@ -17,8 +17,8 @@ struct VtuImport {
   double scale = 1.0;
 };
 
-using CloudRecipe =
-    std::variant<particles::BlockSpec, particles::SphereSpec, particles::ShellSpec, VtuImport>;
+using CloudRecipe = std::variant<particles::BlockSpec, particles::SphereSpec, particles::ShellSpec, VtuImport,
+                                 particles::GmshImportSpec>;
 
 CloudRecipe cloud_recipe(const BodySpec& body);
 

@@ -21,7 +21,8 @@ struct BodySpec {
   ParamSet rk;                         // [body.rk]
   ParamSet initial;                    // [body.initial]
   std::vector<ParamSet> boundaries;    // [[body.boundary]]
-  std::string cloud_file;              // vtu clouds: the file, resolved against the scene's directory
+  std::string cloud_file;              // vtu and gmsh clouds: the file, resolved against the scene's directory
+  std::vector<std::string> file_surfaces;  // gmsh clouds: "surface" and the file's physical surfaces
 
   const std::string& name() const { return body.text("name"); }
   const std::string& generator() const { return cloud.choice("generator"); }

@@ -84,8 +84,27 @@ ParamTable vtu() {
   return t;
 }
 
+// The surfaces of a Gmsh cloud are its file's physical surfaces: the loader reads them
+// (BodySpec::file_surfaces), so the table lists only the whole boundary.
+ParamTable gmsh() {
+  ParamTable t = variant("gmsh", "A Gmsh mesh (.msh: tetrahedra and hexahedra, first or second order) or geometry "
+                                 "(.geo, meshed with mesh_size), read through Gmsh's C++ API.");
+  t.specs = {
+      ParamSpec::text("file").mark_required()
+          .help("Path of the .msh or .geo file, relative to the scene file's directory. Its physical groups of "
+                "dimension 2 are the body's named surfaces, beside \"surface\" (the whole boundary)."),
+      ParamSpec::real("scale", "-").greater_than(0).defaults(1.0)
+          .help("Factor applied to the file's coordinates (1e-6 for a geometry written in micrometres)."),
+      ParamSpec::real("mesh_size", "m").greater_than(0).absent_means("required for .geo")
+          .help("Largest element edge of the mesh made from a .geo file, in the file's units (before scale). "
+                "Not used for a .msh file."),
+  };
+  t.surfaces = {"surface"};
+  return t;
+}
+
 }  // namespace
 
-std::vector<ParamTable> cloud_generators() { return {block(), sphere(), shell(), vtu()}; }
+std::vector<ParamTable> cloud_generators() { return {block(), sphere(), shell(), vtu(), gmsh()}; }
 
 }  // namespace rkpm::scene::tables

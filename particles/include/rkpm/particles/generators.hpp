@@ -63,6 +63,29 @@ Cloud make_shell(const ShellSpec& spec);
 // use: while it reads, VTK's process-wide message window is redirected.
 Cloud import_vtu(const std::string& path);
 
+// A Gmsh file (Gmsh's C++ API): a .msh mesh, or a .geo geometry meshed with elements
+// of at most `mesh_size` (required for .geo, ignored for .msh). Tetrahedra and
+// hexahedra of first and second order; their corner nodes are the particles.
+// Coordinates are multiplied by `scale`.
+// Surfaces: "surface" (the whole boundary) and one per physical group of dimension 2,
+// by its name. Throws CloudError naming the file and, for a bad element, its Gmsh tag.
+// Not for concurrent use with another Gmsh import (Gmsh's state is process-wide; the
+// importer serialises its own calls).
+struct GmshImportSpec {
+  std::string path;
+  double scale = 1.0;
+  double mesh_size = 0.0;
+};
+Cloud import_gmsh(const GmshImportSpec& spec);
+// The surface names a Gmsh file provides ("surface" first, then its named physical
+// surfaces in tag order), without meshing it. Throws CloudError for a file Gmsh cannot read.
+std::vector<std::string> gmsh_surface_names(const std::string& path);
+// The particles a Gmsh import will hold, before importing: a .msh file's node count
+// (an upper bound: a second-order mesh's mid-nodes are not particles), for a .geo file
+// 1.4 V / mesh_size^3 with V its bounding box's volume (a tetrahedral mesh of edge h
+// holds about 1.4 nodes per h^3).
+double gmsh_particle_estimate(const GmshImportSpec& spec);
+
 // Analytic references.
 double ellipsoid_volume(const Vec3& semi_axes);
 double ellipsoid_area(const Vec3& semi_axes);       // exact for spheroids, numeric otherwise

@@ -1,0 +1,129 @@
+// Gmsh input (Gmsh's C++ API): .geo files meshed with a declared size, hand-written
+// .msh files, second-order elements reduced to their corners, physical surfaces as
+// named surfaces, and the files it must refuse with the file and element named.
+#include "rkpm/particles/generators.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+
+namespace rkpm::particles {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "rkpm_particles_gmsh";
+  fs::create_directories(dir);
+  const std::string path = (dir / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+double total_volume(const Cloud& c) { return std::accumulate(c.volume.begin(), c.volume.end(), 0.0); }
+
+// A 2 x 1 x 1 box meshed as 2 x 2 x 2 hexahedra (transfinite, recombined).
+const std::string kHexBox = R"(SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 2, 1, 1};
+Transfinite Curve{:} = 3;
+Transfinite Surface{:};
+Recombine Surface{:};
+Transfinite Volume{1};
+Physical Surface("xmin") = Surface In BoundingBox{-0.01, -0.01, -0.01, 0.01, 1.01, 1.01};
+)";
+
+// The same box as tetrahedra; `order` 1 or 2.
+std::string tet_box(int order) {
+  return "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 2, 1, 1};\nMesh.ElementOrder = " + std::to_string(order) +
+         ";\nPhysical Surface(\"bottom\") = Surface In BoundingBox{-0.01, -0.01, -0.01, 2.01, 1.01, 0.01};\n";
+}
+
+// Two positively oriented tetrahedra sharing the face (2, 3, 4), format 2.2, with the
+// triangle (1, 2, 3) in the physical surface "base"; `tets` replaces their element lines.
+std::string two_tets(const std::string& tets = "2 4 2 2 1 1 2 3 4\n3 4 2 2 1 2 3 4 5\n") {
+  return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n2 1 \"base\"\n3 2 \"solid\"\n$EndPhysicalNames\n"
+         "$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n$EndNodes\n$Elements\n3\n"
+         "1 2 2 1 1 1 2 3\n" + tets + "$EndElements\n";
+}
+
+TEST(ImportGmsh, AHexahedralGeoBecomesHexahedraWithItsPhysicalSurface) {
+  const Cloud c = import_gmsh({write_file("hex.geo", kHexBox), 1e-6, 1.0});
+  ASSERT_EQ(c.size(), 27u);
+  EXPECT_EQ(c.mesh.n_elements(), 8);
+  for (int e = 0; e < c.mesh.n_elements(); ++e) EXPECT_EQ(c.mesh.type[e], ElementType::Hex8);
+  EXPECT_NEAR(total_volume(c), 2e-18, 1e-30) << "scale 1e-6 applies to the coordinates";
+  ASSERT_EQ(c.surface_names, (std::vector<std::string>{"surface", "xmin"}));
+  int on_xmin = 0;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const bool at_x0 = std::abs(c.X[i].x()) < 1e-15;
+    EXPECT_EQ(c.on_surface(static_cast<std::int32_t>(i), "xmin"), at_x0) << i;
+    on_xmin += at_x0;
+  }
+  EXPECT_EQ(on_xmin, 9);
+  EXPECT_EQ(c.boundary_particles.size(), 26u);
+  for (auto p : c.boundary_particles) EXPECT_TRUE(c.on_surface(p, "surface"));
+}
+
+TEST(ImportGmsh, SecondOrderTetrahedraKeepOnlyTheirCorners) {
+  const Cloud first = import_gmsh({write_file("tet1.geo", tet_box(1)), 1.0, 0.5});
+  const Cloud second = import_gmsh({write_file("tet2.geo", tet_box(2)), 1.0, 0.5});
+  EXPECT_EQ(second.size(), first.size()) << "the mid-edge nodes of a second-order mesh are not particles";
+  EXPECT_EQ(second.mesh.n_elements(), first.mesh.n_elements());
+  EXPECT_GT(first.size(), 50u);
+  EXPECT_NEAR(total_volume(second), 2.0, 1e-12);
+  int bottom = 0;
+  for (auto p : second.boundary_particles) {
+    const bool at_z0 = std::abs(second.X[p].z()) < 1e-12;
+    EXPECT_EQ(second.on_surface(p, "bottom"), at_z0) << p;
+    bottom += at_z0;
+  }
+  EXPECT_GT(bottom, 10);
+}
+
+TEST(ImportGmsh, AHandWrittenMshKeepsItsNodesAndNamedSurface) {
+  const Cloud c = import_gmsh({write_file("two_tets.msh", two_tets()), 1.0, 0.0});
+  ASSERT_EQ(c.size(), 5u);
+  EXPECT_EQ(c.mesh.n_elements(), 2);
+  EXPECT_NEAR(total_volume(c), 1.0 / 6.0 + 2.0 / 6.0, 1e-14);
+  ASSERT_EQ(c.surface_names, (std::vector<std::string>{"surface", "base"}));
+  for (std::size_t i = 0; i < c.size(); ++i)
+    EXPECT_EQ(c.on_surface(static_cast<std::int32_t>(i), "base"), std::abs(c.X[i].z()) < 1e-15 && c.X[i].sum() < 1.5)
+        << i;
+  EXPECT_EQ(gmsh_surface_names(write_file("names.msh", two_tets())), (std::vector<std::string>{"surface", "base"}));
+  EXPECT_EQ(gmsh_particle_estimate({write_file("count.msh", two_tets()), 1.0, 0.0}), 5.0);
+}
+
+void expect_refused(const GmshImportSpec& spec, const std::vector<std::string>& parts) {
+  try {
+    import_gmsh(spec);
+    FAIL() << "accepted " << spec.path;
+  } catch (const CloudError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Gmsh file '" + spec.path + "'"), std::string::npos) << what;
+    for (const auto& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
+  }
+}
+
+TEST(ImportGmsh, BadFilesAreRefusedNamingTheFileAndElement) {
+  // Element 3 with two nodes swapped: negative volume.
+  expect_refused({write_file("inverted.msh", two_tets("2 4 2 2 1 1 2 3 4\n3 4 2 2 1 3 2 4 5\n")), 1.0, 0.0},
+                 {"1 of 2 volume elements are inverted or degenerate (first: element 3)"});
+  // A flat tetrahedron: four nodes in one plane.
+  expect_refused({write_file("flat.msh", two_tets("2 4 2 2 1 1 2 3 4\n3 4 2 2 1 1 2 3 3\n")), 1.0, 0.0},
+                 {"inverted or degenerate (first: element 3)"});
+  // A prism (Gmsh type 6).
+  expect_refused({write_file("prism.msh", two_tets("2 4 2 2 1 1 2 3 4\n3 6 2 2 1 1 2 3 4 5 5\n")), 1.0, 0.0},
+                 {"element 3 is a Prism 6", "only tetrahedra and hexahedra"});
+  expect_refused({write_file("text.msh", "this is not a mesh\n"), 1.0, 0.0}, {"not a mesh or geometry Gmsh can read"});
+  expect_refused({write_file("surface_only.msh",
+                             "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n"
+                             "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n"),
+                  1.0, 0.0},
+                 {"has no volume elements"});
+  expect_refused({write_file("no_size.geo", tet_box(1)), 1.0, 0.0}, {"a .geo file needs a mesh size"});
+}
+
+}  // namespace
+}  // namespace rkpm::particles
