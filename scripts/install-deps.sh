@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rkpm needs to build, test and plot (as root).
+# ParaView's Python and Xvfb, for the pictures, conflict with libvtk9-dev: they are
+# installed and removed again by scripts/render-pictures.sh around its rendering.
 # Every dependency is a Debian package: nothing is downloaded at build time.
 #   install-deps.sh          the build, the tests, the benchmarks and the plots
 #   install-deps.sh --fuzz   also clang and libFuzzer for scripts/fuzz.sh (the

@@ -2,7 +2,8 @@
 # README command (b): install what is missing, build, run the whole test suite twice:
 # an optimised Release build, then a Debug build under AddressSanitizer and
 # UndefinedBehaviorSanitizer; between the two, install the Release build into
-# build/install and build and run examples/embedding against it. Exits non-zero if
+# build/install and build and run examples/embedding against it, and render one
+# ParaView picture headless (scripts/render-pictures.sh --check). Exits non-zero if
 # anything fails.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -23,6 +24,11 @@ cmake --install "$here/build" --prefix "$here/build/install" >/dev/null
 cmake -S "$here/examples/embedding" -B "$here/build/embedding" -DCMAKE_PREFIX_PATH="$here/build/install" >/dev/null
 cmake --build "$here/build/embedding" -j"$jobs"
 "$here/build/embedding/embed_rkpm"
+
+echo "== ParaView: the spread-cell example run, rendered headless by pvbatch and checked not blank"
+# Installs ParaView for the rendering and the build packages again afterwards (they
+# conflict on Debian 12), before the sanitizer build needs them.
+bash "$here/scripts/render-pictures.sh" --check "$here/build/pictures-run" "$here/build/pictures"
 
 if [ "${RKPM_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "== Debug build under AddressSanitizer + UndefinedBehaviorSanitizer and tests"
