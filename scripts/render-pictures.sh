@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # ParaView pictures of the example runs (scripts/pictures/render.py), as root.
 # Usage: scripts/render-pictures.sh [--run] [--check] [OUT_DIR] [PICTURE_DIR]
-#   OUT_DIR      where the runs are: OUT_DIR/rbc, OUT_DIR/spread_cell (default out/)
+#   OUT_DIR      where the runs are: OUT_DIR/rbc, OUT_DIR/adhesion, OUT_DIR/crawling,
+#                OUT_DIR/spread_cell (default out/)
 #   PICTURE_DIR  where the PNGs go (default docs/figures/pictures)
-#   --run        first run the example scenes whose runs are missing (rbc: 3-4 min on
-#                2 cores, spread_cell: 15 s) with build/src/app/rkpm
+#   --run        first run the example scenes whose runs are missing with
+#                build/src/app/rkpm (on 2 cores: rbc 3-4 min, adhesion 70 s,
+#                crawling 50 s, spread_cell 15 s)
 #   --check      the CI check: run spread_cell only, render it, fail on a blank picture
 # Debian's python3-paraview conflicts with libvtk9-dev, the build dependency: when
 # pvbatch is missing, this installs ParaView and a virtual X display (Xvfb), renders,
@@ -21,7 +23,7 @@ for a in "$@"; do
 done
 out=${args[0]:-"$here/out"}
 pictures=${args[1]:-"$here/docs/figures/pictures"}
-views=(rbc spread_cell)
+views=(rbc adhesion crawling spread_cell)
 [ "$check" = 1 ] && views=(spread_cell)
 
 rkpm="$here/build/src/app/rkpm"

@@ -3,8 +3,13 @@
 # display). Usage: pvbatch render.py OUT_DIR PICTURE_DIR [VIEW ...]
 #   rbc          the red-blood-cell run's cross-section (y = 0 plane): von Mises stress
 #                and the director as line glyphs
+#   adhesion     the adhered cell seen from below, coloured by its height above the
+#                substrate's top: the flat contact patch is the part near zero
+#   crawling     the substrate seen from above, coloured by its stiffness factor
+#                (seed Eq. 18), with the cell's centroid track from history.csv
+#                (magnified 100 times: the drift is tens of nanometres)
 #   spread_cell  the spread cell on its substrate, seen from above at an angle, the
-#                substrate's top coloured by the in-plane displacement toward the cell
+#                substrate coloured by its displacement
 # Each view reads OUT_DIR/<view>/frames.pvd at its last time and writes
 # PICTURE_DIR/<view>.png; a view whose run is missing is skipped with a message.
 # After writing, each picture is checked not to be blank: at least 1,000 distinct
@@ -12,8 +17,10 @@
 import os
 import sys
 
-from paraview.simple import (ColorBy, CreateRenderView, GetColorTransferFunction, GetScalarBar, Glyph, PVDReader,
-                             SaveScreenshot, Show, Slice, Threshold)
+import csv
+
+from paraview.simple import (Calculator, ColorBy, CreateRenderView, GetColorTransferFunction, GetScalarBar, Glyph,
+                             PolyLineSource, PVDReader, SaveScreenshot, Show, Slice, Text, Threshold)
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 WIDTH, HEIGHT = 1200, 800
@@ -76,17 +83,9 @@ def rbc(pvd, png):
 def spread_cell(pvd, png):
     reader, t = last_frame(pvd)
     view = new_view(t)
-    substrate = Threshold(Input=reader)
-    substrate.Scalars = ['POINTS', 'body_id']
-    substrate.LowerThreshold = 0.5
-    substrate.UpperThreshold = 1.5
-    shown = Show(substrate, view)
+    shown = Show(body(reader, 1), view)
     colour(shown, view, 'displacement', 'substrate displacement [m]')
-    cell = Threshold(Input=reader)
-    cell.Scalars = ['POINTS', 'body_id']
-    cell.LowerThreshold = -0.5
-    cell.UpperThreshold = 0.5
-    cell_shown = Show(cell, view)
+    cell_shown = Show(body(reader, 0), view)
     cell_shown.ColorArrayName = ['POINTS', '']
     cell_shown.DiffuseColor = [0.85, 0.85, 0.85]
     cell_shown.Opacity = 0.35
@@ -94,6 +93,79 @@ def spread_cell(pvd, png):
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 0.0, 1.0]
     view.ResetCamera()
+    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+
+
+def body(reader, body_id):
+    part = Threshold(Input=reader)
+    part.Scalars = ['POINTS', 'body_id']
+    part.LowerThreshold = body_id - 0.5
+    part.UpperThreshold = body_id + 0.5
+    return part
+
+
+def adhesion(pvd, png):
+    reader, t = last_frame(pvd)
+    view = new_view(t)
+    height = Calculator(Input=body(reader, 0))
+    height.ResultArrayName = 'height'
+    height.Function = 'coordsZ - %g' % SUBSTRATE_TOP
+    shown = Show(height, view)
+    ColorBy(shown, ('POINTS', 'height'))
+    lut = GetColorTransferFunction('height')
+    lut.RescaleTransferFunction(0.0, 2e-6)
+    shown.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(lut, view)
+    bar.Title = 'height above the substrate [m]'
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    view.CameraPosition = [0.0, 0.0, -40e-6]
+    view.CameraFocalPoint = [0.0, 0.0, 5e-6]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.ResetCamera()
+    view.CameraParallelProjection = 1
+    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+
+
+def crawling(pvd, png):
+    reader, t = last_frame(pvd)
+    view = new_view(t)
+    # Stiffness factor grade_a (y - y_min) / L0 + grade_b of examples/crawling/crawling.toml,
+    # at each particle's reference y (current y minus its displacement).
+    stiffness = Calculator(Input=body(reader, 1))
+    stiffness.ResultArrayName = 'stiffness_factor'
+    stiffness.Function = '%g * (coordsY - displacement_Y - (%g)) / %g + %g' % (GRADE_A, Y_MIN, GRADE_LENGTH, GRADE_B)
+    shown = Show(stiffness, view)
+    colour(shown, view, 'stiffness_factor', 'substrate stiffness factor (Eq. 18)')
+    cell = Show(body(reader, 0), view)
+    cell.ColorArrayName = ['POINTS', '']
+    cell.DiffuseColor = [0.85, 0.85, 0.85]
+    cell.Opacity = 0.3
+    # The drift is tens of nanometres against a 10 um cell: the track is drawn from the
+    # centroid's start with its displacements magnified TRACK_MAGNIFICATION times.
+    with open(os.path.join(os.path.dirname(pvd), 'history.csv')) as f:
+        rows = [(float(r['centroid_x']), float(r['centroid_y'])) for r in csv.DictReader(f)]
+    x0, y0 = rows[0]
+    points = []
+    for x, y in rows:
+        points += [x0 + TRACK_MAGNIFICATION * (x - x0), y0 + TRACK_MAGNIFICATION * (y - y0), TRACK_HEIGHT]
+    track = PolyLineSource(Points=points)
+    dx, dy = rows[-1][0] - x0, rows[-1][1] - y0
+    label = Text(Text='centroid track (black), magnified %gx: %.1f nm along x, %.1f nm along y (stiffer: +y)'
+                      % (TRACK_MAGNIFICATION, dx * 1e9, dy * 1e9))
+    caption = Show(label, view)
+    caption.WindowLocation = 'Upper Left Corner'
+    caption.Color = [0.0, 0.0, 0.0]
+    caption.FontSize = 14
+    line = Show(track, view)
+    line.ColorArrayName = ['POINTS', '']
+    line.AmbientColor = line.DiffuseColor = [0.0, 0.0, 0.0]
+    line.LineWidth = 4.0
+    view.CameraPosition = [0.0, 0.0, 60e-6]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelProjection = 1
+    view.ResetCamera()
+    view.CameraParallelScale = 8e-6
     SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
 
 
@@ -109,7 +181,14 @@ def distinct_colours(png):
     return len(seen)
 
 
-VIEWS = {'rbc': rbc, 'spread_cell': spread_cell}
+# The substrate of examples/adhesion and examples/crawling: its top face and the
+# grading of crawling.toml.
+SUBSTRATE_TOP = 4.5e-6
+Y_MIN, GRADE_LENGTH, GRADE_A, GRADE_B = -18.75e-6, 37.5e-6, 4.0, 0.5
+TRACK_HEIGHT = 12e-6   # above the cell, so the track is not hidden
+TRACK_MAGNIFICATION = 100.0
+
+VIEWS = {'rbc': rbc, 'adhesion': adhesion, 'crawling': crawling, 'spread_cell': spread_cell}
 
 
 def main(argv):
