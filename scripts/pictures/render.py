@@ -44,6 +44,17 @@ def new_view(t):
     return view
 
 
+def aim_and_save(view, png, position, focal_point, up, parallel=False, parallel_scale=None):
+    view.CameraPosition = position
+    view.CameraFocalPoint = focal_point
+    view.CameraViewUp = up
+    view.CameraParallelProjection = 1 if parallel else 0
+    view.ResetCamera()
+    if parallel_scale is not None:
+        view.CameraParallelScale = parallel_scale
+    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+
+
 def colour(display, view, array, title):
     ColorBy(display, ('POINTS', array))
     display.RescaleTransferFunctionToDataRange(True, False)
@@ -72,12 +83,7 @@ def rbc(pvd, png):
     lines = Show(glyphs, view)
     lines.ColorArrayName = ['POINTS', '']
     lines.AmbientColor = lines.DiffuseColor = [0.0, 0.0, 0.0]
-    view.CameraPosition = [0.0, -30e-6, 0.0]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 0.0, 1.0]
-    view.ResetCamera()
-    view.CameraParallelProjection = 1
-    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+    aim_and_save(view, png, [0.0, -30e-6, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0], parallel=True)
 
 
 def spread_cell(pvd, png):
@@ -89,11 +95,7 @@ def spread_cell(pvd, png):
     cell_shown.ColorArrayName = ['POINTS', '']
     cell_shown.DiffuseColor = [0.85, 0.85, 0.85]
     cell_shown.Opacity = 0.35
-    view.CameraPosition = [0.0, -30e-6, 25e-6]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 0.0, 1.0]
-    view.ResetCamera()
-    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+    aim_and_save(view, png, [0.0, -30e-6, 25e-6], [0.0, 0.0, 0.0], [0.0, 0.0, 1.0])
 
 
 def body(reader, body_id):
@@ -118,12 +120,7 @@ def adhesion(pvd, png):
     bar = GetScalarBar(lut, view)
     bar.Title = 'height above the substrate [m]'
     bar.TitleColor = bar.LabelColor = [0, 0, 0]
-    view.CameraPosition = [0.0, 0.0, -40e-6]
-    view.CameraFocalPoint = [0.0, 0.0, 5e-6]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.ResetCamera()
-    view.CameraParallelProjection = 1
-    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+    aim_and_save(view, png, [0.0, 0.0, -40e-6], [0.0, 0.0, 5e-6], [0.0, 1.0, 0.0], parallel=True)
 
 
 def crawling(pvd, png):
@@ -160,13 +157,7 @@ def crawling(pvd, png):
     line.ColorArrayName = ['POINTS', '']
     line.AmbientColor = line.DiffuseColor = [0.0, 0.0, 0.0]
     line.LineWidth = 4.0
-    view.CameraPosition = [0.0, 0.0, 60e-6]
-    view.CameraFocalPoint = [0.0, 0.0, 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraParallelProjection = 1
-    view.ResetCamera()
-    view.CameraParallelScale = 8e-6
-    SaveScreenshot(png, view, ImageResolution=[WIDTH, HEIGHT])
+    aim_and_save(view, png, [0.0, 0.0, 60e-6], [0.0, 0.0, 0.0], [0.0, 1.0, 0.0], parallel=True, parallel_scale=8e-6)
 
 
 def distinct_colours(png):

@@ -185,9 +185,7 @@ double material_stable_dt(const Body& body) {
   return dt;
 }
 
-void scale_inertia(Body& body, double target) {
-  std::vector<double> steps;
-  particle_wave_steps(body, steps);
+void scale_inertia(Body& body, double target, const std::vector<double>& steps) {
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const double ratio = target / steps[i];
     body.inertia[i] = body.mass[i] * std::max(1.0, ratio * ratio);

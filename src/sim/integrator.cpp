@@ -41,14 +41,19 @@ double Integrator::estimate_stable_dt() const {
 void Integrator::forces_and_accelerations() {
   compute_forces(world_);
   support_power_ = 0.0;
+  for (auto& bp : world_.bodies) support_power_ += bp->constraints.transform_forces(bp->force);
+  accelerations();
+  term_power_ = power_of_terms();
+}
+
+// a = f / inertia from the forces of the last evaluation.
+void Integrator::accelerations() {
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
-    support_power_ += b.constraints.transform_forces(b.force);
     const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) b.a[i] = b.force[i] / b.inertia[i];
   }
-  term_power_ = power_of_terms();
 }
 
 double Integrator::power_of_terms() const {
@@ -90,7 +95,7 @@ void Integrator::initialize() {
   unscaled_stable_dt_ = estimate_stable_dt();
   if (settings_.mode == Mode::Relax && settings_.mass_scaling) {
     scale_masses();
-    forces_and_accelerations();
+    accelerations();  // the forces do not depend on the masses
   }
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
@@ -116,15 +121,16 @@ void Integrator::initialize() {
 // by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
 // The median of an even count is the upper middle value: deterministic, no averaging.
 void Integrator::scale_masses() {
-  std::vector<double> all, steps;
-  for (const auto& bp : world_.bodies) {
-    particle_wave_steps(*bp, steps);
-    all.insert(all.end(), steps.begin(), steps.end());
+  std::vector<std::vector<double>> steps(world_.bodies.size());
+  std::vector<double> all;
+  for (std::size_t b = 0; b < steps.size(); ++b) {
+    particle_wave_steps(*world_.bodies[b], steps[b]);
+    all.insert(all.end(), steps[b].begin(), steps[b].end());
   }
   if (all.empty()) return;
   const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
   std::nth_element(all.begin(), middle, all.end());
-  for (auto& bp : world_.bodies) scale_inertia(*bp, *middle);
+  for (std::size_t b = 0; b < steps.size(); ++b) scale_inertia(*world_.bodies[b], *middle, steps[b]);
 }
 
 // One step of velocity Verlet (the central-difference scheme with lumped masses) with

@@ -140,10 +140,10 @@ double material_stable_dt(const Body& body);
 void particle_wave_steps(const Body& body, std::vector<double>& steps);
 
 // Mass scaling (relaxation only: the masses of a static problem are free): every particle
-// whose wave step is below `target` gets the inertia mass_I (target / step_I)^2, so that
-// its own step reaches the target; the others keep their mass. Dynamic relaxation in the
-// sense of Underwood (1983): the equilibrium does not depend on the masses, the number of
-// steps to reach it does.
-void scale_inertia(Body& body, double target);
+// whose wave step (`steps`, from particle_wave_steps) is below `target` gets the inertia
+// mass_I (target / step_I)^2, so that its own step reaches the target; the others keep
+// their mass. Dynamic relaxation in the sense of Underwood (1983): the equilibrium does
+// not depend on the masses, the number of steps to reach it does.
+void scale_inertia(Body& body, double target, const std::vector<double>& steps);
 
 }  // namespace rkpm::sim
