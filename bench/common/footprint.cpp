@@ -42,9 +42,7 @@ auto sum_over_bodies(const sim::World& world, Measure measure) {
 
 Footprint footprint(const sim::Body& b) {
   Footprint f;
-  const auto& q = b.boundary;
-  f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation) + bytes(q.point) + bytes(q.area) +
-                bytes(q.owner) + bytes(q.surface_mask) + bytes(q.row_offset) + bytes(q.col) + bytes(q.psi) +
+  f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation) +
                 (b.rk ? bytes(b.rk->support_radius()) : 0);
   f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
             bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +

@@ -65,6 +65,26 @@ void time_stages(const scene::Scene& scene, SizeResult& r) {
   }
 }
 
+// The row-length distribution of the built operators (support sizes made visible).
+void record_row_lengths(const sim::World& world, SizeResult& r) {
+  std::vector<double> lengths;
+  double interpolation_entries = 0, rows = 0;
+  for (const auto& body : world.bodies) {
+    const auto& off = body->gradient.row_offset;
+    for (std::size_t L = 0; L + 1 < off.size(); ++L) lengths.push_back(off[L + 1] - off[L]);
+    interpolation_entries += static_cast<double>(body->interpolation.col.size());
+    rows += static_cast<double>(body->interpolation.row_offset.empty() ? 0 : body->interpolation.row_offset.size() - 1);
+  }
+  if (lengths.empty()) return;
+  std::sort(lengths.begin(), lengths.end());
+  double sum = 0;
+  for (double l : lengths) sum += l;
+  r.gradient_row_mean = sum / static_cast<double>(lengths.size());
+  r.gradient_row_p95 = lengths[static_cast<std::size_t>(0.95 * static_cast<double>(lengths.size() - 1))];
+  r.gradient_row_max = lengths.back();
+  r.interpolation_row_mean = rows > 0 ? interpolation_entries / rows : 0.0;
+}
+
 }  // namespace
 
 SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureSettings& settings) {
@@ -87,6 +107,7 @@ SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureS
     r.state_bytes = static_cast<double>(fp.state);
     r.cloud_bytes = static_cast<double>(fp.cloud);
     r.traffic_bytes = static_cast<double>(bench::internal_force_traffic(*world).total());
+    record_row_lengths(*world, r);
 
     const auto timed_steps = [&](int threads, int warmup, int count) {
       omp_set_num_threads(threads);

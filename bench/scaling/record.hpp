@@ -31,6 +31,11 @@ struct SizeResult {
   double operators_bytes = 0, state_bytes = 0, cloud_bytes = 0;
   double traffic_bytes = 0;  // internal-force step, footprint.hpp
 
+  // Row lengths (entries per row) of the gradient operator over all bodies: mean, 95th
+  // percentile, largest; and the interpolation operator's mean.
+  double gradient_row_mean = 0, gradient_row_p95 = 0, gradient_row_max = 0;
+  double interpolation_row_mean = 0;
+
   double other_setup_s() const;  // build_world minus the parts timed separately
 };
 

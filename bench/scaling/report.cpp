@@ -156,17 +156,18 @@ void write_tables(std::ostream& md, const StudyResult& s) {
   }
   md << "\n#### Memory\n\n"
         "| geometry | particles | peak RSS per particle [B] | Body arrays per particle [B] | of which operators | "
-        "state | cloud | notes |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---|\n";
+        "state | cloud | gradient row: mean / p95 / max | interpolation row: mean | notes |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const auto& r : s.sizes) {
     if (!ok(r)) {
-      md << fmt::format("| {} | {} | {} ||||||\n", r.geometry, count(r.particles), status_cell(r));
+      md << fmt::format("| {} | {} | {} ||||||||\n", r.geometry, count(r.particles), status_cell(r));
       continue;
     }
-    md << fmt::format("| {} | {} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {} |\n", r.geometry,
-                      count(r.particles), per_particle(r.peak_bytes, r), per_particle(arrays_bytes(r), r),
+    md << fmt::format("| {} | {} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} | {:.0f} / {:.0f} / {:.0f} | {:.0f} | {} |\n",
+                      r.geometry, count(r.particles), per_particle(r.peak_bytes, r), per_particle(arrays_bytes(r), r),
                       per_particle(r.operators_bytes, r), per_particle(r.state_bytes, r),
-                      per_particle(r.cloud_bytes, r), r.note);
+                      per_particle(r.cloud_bytes, r), r.gradient_row_mean, r.gradient_row_p95, r.gradient_row_max,
+                      r.interpolation_row_mean, r.note);
   }
   md << "\n#### Fitted exponents p of t ~ N^p\n\n"
         "| geometry | sizes | particles | step, 2 threads | step, 1 thread | internal force | set-up |\n"

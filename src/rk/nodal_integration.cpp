@@ -30,8 +30,10 @@ class FirstError {
     }
   }
   void rethrow() const {
-    if (particle_ != std::numeric_limits<Index>::max()) throw ApproximationError(message_);
+    if (failed()) throw ApproximationError(message_);
   }
+  bool failed() const { return particle_ != std::numeric_limits<Index>::max(); }
+  Index particle() const { return particle_; }
 
  private:
   Index particle_ = std::numeric_limits<Index>::max();
@@ -51,12 +53,22 @@ struct RowAccumulator {
     }
     value[i] += v;
   }
-  // Moves the row out (sorted by particle id) and resets the touched slots.
-  void flush(double scale, std::vector<std::pair<Index, Vec3>>& row) {
+  // Appends the row (sorted by particle id) to col/grad, resets the touched slots and
+  // returns the row's length.
+  Index flush(double scale, std::vector<Index>& col, std::vector<Vec3>& grad) {
     std::sort(touched.begin(), touched.end());
-    row.clear();
     for (Index i : touched) {
-      row.emplace_back(i, value[i] * scale);
+      col.push_back(i);
+      grad.push_back(value[i] * scale);
+      value[i].setZero();
+      used[i] = 0;
+    }
+    const auto length = static_cast<Index>(touched.size());
+    touched.clear();
+    return length;
+  }
+  void discard() {
+    for (Index i : touched) {
       value[i].setZero();
       used[i] = 0;
     }
@@ -78,21 +90,30 @@ std::string particle_label(const particles::Cloud& cloud, Index i) {
   return fmt::format("cloud '{}', particle {}", cloud.name, i);
 }
 
-GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows, std::vector<double> weight,
-                         Index n_particles) {
+// Rows of a block of consecutive integration points, built by one thread.
+struct RowPiece {
+  std::vector<Index> length, col;
+  std::vector<Vec3> grad;
+};
+
+// Joins the pieces in block order into the flat operator, freeing each as it goes, so
+// the build's peak is the operator plus one piece rather than two copies of it.
+GradientOperator join(std::vector<RowPiece>& pieces, std::vector<double> weight, Index n_particles) {
   GradientOperator op;
-  op.row_offset.assign(rows.size() + 1, 0);
-  for (std::size_t r = 0; r < rows.size(); ++r) op.row_offset[r + 1] = op.row_offset[r] + static_cast<Index>(rows[r].size());
-  op.col.resize(static_cast<std::size_t>(op.row_offset.back()));
-  op.grad.resize(op.col.size());
-  for (std::size_t r = 0; r < rows.size(); ++r) {
-    std::size_t k = op.row_offset[r];
-    for (const auto& [i, b] : rows[r]) {
-      op.col[k] = i;
-      op.grad[k] = b;
-      ++k;
+  std::size_t entries = 0;
+  for (const auto& piece : pieces) entries += piece.col.size();
+  op.row_offset.assign(weight.size() + 1, 0);
+  op.col.reserve(entries);
+  op.grad.reserve(entries);
+  std::size_t r = 0;
+  for (auto& piece : pieces) {
+    for (const Index len : piece.length) {
+      op.row_offset[r + 1] = op.row_offset[r] + len;
+      ++r;
     }
-    std::vector<std::pair<Index, Vec3>>().swap(rows[r]);
+    op.col.insert(op.col.end(), piece.col.begin(), piece.col.end());
+    op.grad.insert(op.grad.end(), piece.grad.begin(), piece.grad.end());
+    piece = RowPiece{};
   }
   op.weight = std::move(weight);
   op.n_columns = n_particles;
@@ -102,25 +123,60 @@ GradientOperator flatten(std::vector<std::vector<std::pair<Index, Vec3>>>& rows,
 // Psi_I at each of `points` (in parallel), stored row by row in CSR form: the shape of
 // the boundary quadrature and of the nodal interpolation. A point the approximation
 // cannot handle is diagnosed serially afterwards, named by label(p).
+// The points are taken in fixed blocks, each filling a CSR piece of its own with a
+// per-thread scratch; the pieces are joined in block order (the result does not
+// depend on the threads) and freed as they are joined, so the build holds little
+// beyond the result (a ShapeValues per point, with its neighbour-query buffer, held
+// several times the result's memory).
 void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
                          std::vector<Index>& col, std::vector<double>& psi,
                          const std::function<std::string(std::size_t)>& label) {
+  struct Piece {
+    std::vector<Index> length, col;
+    std::vector<double> psi;
+  };
+  constexpr std::size_t block = 512;
   const std::size_t m = points.size();
-  std::vector<ShapeValues> values(m);
+  const std::size_t n_blocks = (m + block - 1) / block;
+  std::vector<Piece> pieces(n_blocks);
   FirstError error;
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::size_t p = 0; p < m; ++p)
-    if (!rk.evaluate(points[p], values[p], false)) error.record(static_cast<Index>(p), "");
+#pragma omp parallel
+  {
+    ShapeValues values;
+#pragma omp for schedule(dynamic, 1)
+    for (std::size_t b = 0; b < n_blocks; ++b) {
+      Piece& piece = pieces[b];
+      for (std::size_t p = b * block; p < std::min(m, (b + 1) * block); ++p) {
+        if (!rk.evaluate(points[p], values, false)) {
+          error.record(static_cast<Index>(p), "");
+          break;
+        }
+        piece.length.push_back(static_cast<Index>(values.ids.size()));
+        piece.col.insert(piece.col.end(), values.ids.begin(), values.ids.end());
+        piece.psi.insert(piece.psi.end(), values.psi.begin(), values.psi.end());
+      }
+    }
+  }
   try {
     error.rethrow();
   } catch (const ApproximationError&) {
-    for (std::size_t p = 0; p < m; ++p) rk.evaluate_or_throw(points[p], values[p], false, label(p));
+    ShapeValues values;
+    for (std::size_t p = 0; p < m; ++p) rk.evaluate_or_throw(points[p], values, false, label(p));
   }
+  std::size_t entries = 0;
+  for (const auto& piece : pieces) entries += piece.col.size();
   row_offset.assign(m + 1, 0);
-  for (std::size_t p = 0; p < m; ++p) {
-    row_offset[p + 1] = row_offset[p] + static_cast<Index>(values[p].ids.size());
-    col.insert(col.end(), values[p].ids.begin(), values[p].ids.end());
-    psi.insert(psi.end(), values[p].psi.begin(), values[p].psi.end());
+  col.reserve(col.size() + entries);
+  psi.reserve(psi.size() + entries);
+  std::size_t p = 0;
+  for (auto& piece : pieces) {
+    for (const Index len : piece.length) {
+      row_offset[p + 1] = row_offset[p] + len;
+      ++p;
+    }
+    col.insert(col.end(), piece.col.begin(), piece.col.end());
+    psi.insert(psi.end(), piece.psi.begin(), piece.psi.end());
+    piece = Piece{};
   }
 }
 
@@ -145,7 +201,9 @@ void CsrTranspose::build(const std::vector<Index>& row_offset, const std::vector
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
                                          Integration scheme) {
   const auto n = static_cast<Index>(cloud.size());
-  std::vector<std::vector<std::pair<Index, Vec3>>> rows(n);
+  constexpr Index block = 256;
+  const Index n_blocks = (n + block - 1) / block;
+  std::vector<RowPiece> pieces(static_cast<std::size_t>(n_blocks));
   std::vector<double> weight(n, 0.0);
   FirstError error;
   const particles::DualCells cells(cloud);
@@ -156,75 +214,71 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
     std::vector<particles::DualFacet> facets;
     std::vector<std::pair<Index, double>> near_cell;
     RowAccumulator acc(n);
-#pragma omp for schedule(dynamic, 64)
-    for (Index L = 0; L < n; ++L) {
-      const Vec3& XL = cloud.X[L];
-      if (scheme == Integration::Direct) {
-        if (!rk.evaluate(XL, sv, true)) {
-          error.record(L, "");  // message filled below, outside the hot path
+#pragma omp for schedule(dynamic, 1)
+    for (Index b = 0; b < n_blocks; ++b) {
+      RowPiece& piece = pieces[static_cast<std::size_t>(b)];
+      for (Index L = b * block; L < std::min(n, (b + 1) * block); ++L) {
+        const Vec3& XL = cloud.X[L];
+        if (scheme == Integration::Direct) {
+          if (!rk.evaluate(XL, sv, true)) {
+            error.record(L, "");  // message filled below, outside the hot path
+            break;
+          }
+          piece.length.push_back(static_cast<Index>(sv.ids.size()));
+          piece.col.insert(piece.col.end(), sv.ids.begin(), sv.ids.end());
+          piece.grad.insert(piece.grad.end(), sv.grad.begin(), sv.grad.end());
+          weight[L] = cloud.volume[L];
           continue;
         }
-        auto& row = rows[L];
-        row.reserve(sv.ids.size());
-        for (std::size_t k = 0; k < sv.ids.size(); ++k) row.emplace_back(sv.ids[k], sv.grad[k]);
-        weight[L] = cloud.volume[L];
-        continue;
-      }
-      cells.facets(L, facets);
-      // One tree query per cell instead of one per facet: the facets lie within `reach`.
-      double reach = 0.0;
-      for (const auto& f : facets) reach = std::max(reach, (f.point - XL).norm());
-      rk.candidates(XL, reach, near_cell);
-      double volume = 0.0;
-      bool ok = true;
-      for (const auto& f : facets) {
-        volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact for the closed cell
-        if (!rk.evaluate_among(f.point, near_cell, sv, false)) {
-          ok = false;
+        cells.facets(L, facets);
+        // One tree query per cell instead of one per facet: the facets lie within `reach`.
+        double reach = 0.0;
+        for (const auto& f : facets) reach = std::max(reach, (f.point - XL).norm());
+        rk.candidates(XL, reach, near_cell);
+        double volume = 0.0;
+        bool ok = true;
+        for (const auto& f : facets) {
+          volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact for the closed cell
+          if (!rk.evaluate_among(f.point, near_cell, sv, false)) {
+            ok = false;
+            break;
+          }
+          for (std::size_t k = 0; k < sv.ids.size(); ++k) acc.add(sv.ids[k], sv.psi[k] * f.area);
+        }
+        if (!ok || !(volume > 0.0)) {
+          acc.discard();
+          error.record(L, "");
           break;
         }
-        for (std::size_t k = 0; k < sv.ids.size(); ++k) acc.add(sv.ids[k], sv.psi[k] * f.area);
+        piece.length.push_back(acc.flush(1.0 / volume, piece.col, piece.grad));
+        weight[L] = volume;
       }
-      if (!ok || !(volume > 0.0)) {
-        acc.flush(0.0, rows[L]);
-        error.record(L, "");
-        continue;
-      }
-      acc.flush(1.0 / volume, rows[L]);
-      weight[L] = volume;
     }
   }
-  try {
-    error.rethrow();
-  } catch (const ApproximationError&) {
+  if (error.failed()) {
     // Re-run the first failing particle serially to produce the full diagnosis.
-    for (Index L = 0; L < n; ++L) {
-      if (!rows[L].empty()) continue;
-      ShapeValues sv;
-      const std::string what = particle_label(cloud, L);
-      if (scheme == Integration::Direct) {
-        rk.evaluate_or_throw(cloud.X[L], sv, true, what);
-      } else {
-        std::vector<particles::DualFacet> facets;
-        cells.facets(L, facets);
-        for (const auto& f : facets)
-          rk.evaluate_or_throw(f.point, sv, false, what + " (a quadrature point on its smoothing-cell boundary)");
-        throw ApproximationError(fmt::format("{}: its smoothing cell has no positive volume", what));
-      }
-    }
-    throw;
+    const Index L = error.particle();
+    ShapeValues sv;
+    const std::string what = particle_label(cloud, L);
+    if (scheme == Integration::Direct) rk.evaluate_or_throw(cloud.X[L], sv, true, what);
+    std::vector<particles::DualFacet> facets;
+    cells.facets(L, facets);
+    for (const auto& f : facets)
+      rk.evaluate_or_throw(f.point, sv, false, what + " (a quadrature point on its smoothing-cell boundary)");
+    throw ApproximationError(fmt::format("{}: its smoothing cell has no positive volume", what));
   }
-  return flatten(rows, std::move(weight), n);
+  return join(pieces, std::move(weight), n);
 }
 
-BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk) {
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
+                                             std::uint32_t surface_bits) {
   BoundaryQuadrature q;
   const particles::DualCells cells(cloud);
   std::vector<particles::DualFacet> facets;
   for (Index L : cloud.boundary_particles) {
     cells.facets(L, facets);
     for (const auto& f : facets)
-      if (f.on_boundary) {
+      if (f.on_boundary && (surface_bits == 0u || (face_surfaces(cloud, f.face) & surface_bits))) {
         q.point.push_back(f.point);
         q.area.push_back(f.area);
         q.owner.push_back(L);

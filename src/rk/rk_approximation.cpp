@@ -4,6 +4,7 @@
 #include "rkpm/rk/element_edges.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -24,6 +25,54 @@ std::vector<double> local_spacing(const particles::Cloud& cloud) {
     }
   }
   return h;
+}
+
+SupportEllipsoids ellipsoidal_supports(const particles::Cloud& cloud, double support) {
+  const std::size_t n = cloud.size();
+  const auto& mesh = cloud.mesh;
+  // Each edge is seen once per element that has it; the repeats weigh C_I but do not
+  // change the max over edges, and a lattice's repeats are symmetric.
+  const auto for_each_edge = [&](const auto& visit) {
+    for (int e = 0; e < mesh.n_elements(); ++e) {
+      const std::int32_t* nodes = mesh.element_nodes(e);
+      for (const auto& edge : element_edges(mesh.type[static_cast<std::size_t>(e)])) {
+        const Index a = nodes[edge[0]], b = nodes[edge[1]];
+        visit(a, b, Vec3(cloud.X[static_cast<std::size_t>(b)] - cloud.X[static_cast<std::size_t>(a)]));
+      }
+    }
+  };
+  std::vector<Mat3> covariance(n, Mat3::Zero());
+  for_each_edge([&](Index a, Index b, const Vec3& e) {
+    const Mat3 ee = e * e.transpose();
+    covariance[static_cast<std::size_t>(a)] += ee;
+    covariance[static_cast<std::size_t>(b)] += ee;
+  });
+  SupportEllipsoids out;
+  out.metric.resize(n);
+  out.radius.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::LDLT<Mat3> ldlt(covariance[i]);
+    if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || !(ldlt.rcond() > 1e-12))
+      throw ApproximationError(fmt::format(
+          "cloud '{}', particle {}: its mesh edges do not span three dimensions, so no ellipsoidal support "
+          "can be shaped from them (use support_shape = \"sphere\")",
+          cloud.name, i));
+    out.metric[i] = ldlt.solve(Mat3::Identity());
+  }
+  std::vector<double> reach(n, 0.0);  // s_I = max_e e^T C_I^-1 e
+  for_each_edge([&](Index a, Index b, const Vec3& e) {
+    for (const Index p : {a, b}) {
+      const auto i = static_cast<std::size_t>(p);
+      reach[i] = std::max(reach[i], e.dot(out.metric[i] * e));
+    }
+  });
+  for (std::size_t i = 0; i < n; ++i) {
+    out.metric[i] /= support * support * reach[i];
+    // Largest semi-axis 1 / sqrt(lambda_min(G)).
+    const double lambda_min = Eigen::SelfAdjointEigenSolver<Mat3>(out.metric[i], Eigen::EigenvaluesOnly).eigenvalues()(0);
+    out.radius[i] = 1.0 / std::sqrt(lambda_min);
+  }
+  return out;
 }
 
 namespace {
@@ -77,7 +126,40 @@ RKApproximation::RKApproximation(const std::vector<Vec3>& X, std::vector<double>
 }
 
 RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings settings)
-    : RKApproximation(cloud.X, scaled(local_spacing(cloud), settings.support), settings) {}
+    : RKApproximation(cloud.X, supports_of(cloud, settings), settings) {}
+
+RKApproximation::RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings)
+    : RKApproximation(X, std::move(supports.radius), settings) {
+  metric_ = std::move(supports.metric);
+  min_axis_.resize(metric_.size());
+  for (std::size_t i = 0; i < metric_.size(); ++i)
+    min_axis_[i] = 1.0 / std::sqrt(Eigen::SelfAdjointEigenSolver<Mat3>(metric_[i], Eigen::EigenvaluesOnly).eigenvalues()(2));
+}
+
+SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, const RKSettings& settings) {
+  if (settings.shape == SupportShape::Ellipsoid) return ellipsoidal_supports(cloud, settings.support);
+  return {{}, scaled(local_spacing(cloud), settings.support)};
+}
+
+double RKApproximation::normalized_distance(Index id, const Vec3& x) const {
+  const auto i = static_cast<std::size_t>(id);
+  const Vec3 r = x - X_[i];
+  if (metric_.empty()) {
+    const double d2 = r.squaredNorm();
+    if (d2 >= a_[i] * a_[i]) return 1.0;
+    return std::sqrt(d2) / a_[i];
+  }
+  return std::sqrt(std::max(0.0, r.dot(metric_[i] * r)));
+}
+
+Vec3 RKApproximation::kernel_gradient(Index id, const Vec3& x, double q, double dw_dq) const {
+  const auto i = static_cast<std::size_t>(id);
+  const Vec3 r = x - X_[i];
+  if (q <= 0.0) return Vec3::Zero();
+  // d q / d x = r / (a |r|) for a ball, G r / q for an ellipsoid.
+  if (metric_.empty()) return dw_dq / (a_[i] * r.norm()) * r;
+  return dw_dq / q * (metric_[i] * r);
+}
 
 bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
   search_.query(x, a_max_, out.scratch);
@@ -89,6 +171,19 @@ void RKApproximation::candidates(const Vec3& centre, double reach,
   // A point within `reach` of the centre is reached only by particles within
   // a_max + reach of the centre; the relative slack covers the rounding of that bound.
   search_.query(centre, (a_max_ + reach) * (1.0 + 1e-9), out);
+  // Of those, keep the ones whose own support reaches that far: q_I is a norm, so
+  // q_I(x) <= q_I(centre) + reach / b_I with b_I the support's smallest semi-axis (its
+  // radius for a ball). What is dropped has phi_I = 0 at every such point, so the
+  // evaluations give the same result, bit for bit, from a shorter list.
+  const double slack = 1.0 + 1e-9;
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [&](const std::pair<Index, double>& c) {
+                             const auto i = static_cast<std::size_t>(c.first);
+                             if (metric_.empty())
+                               return (X_[i] - centre).norm() / a_[i] >= (1.0 + reach / a_[i]) * slack;
+                             return normalized_distance(c.first, centre) >= (1.0 + reach / min_axis_[i]) * slack;
+                           }),
+            out.end());
 }
 
 bool RKApproximation::evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,
@@ -124,11 +219,10 @@ bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<
   MatN M = MatN::Zero();
   for (const auto& candidate : candidates) {
     const Index id = candidate.first;
-    const double a = a_[static_cast<std::size_t>(id)];
     // The distance from x itself (the candidate's stored one may be from another centre).
-    const double d2 = (X_[static_cast<std::size_t>(id)] - x).squaredNorm();
-    if (d2 >= a * a) continue;
-    const double w = evaluate_kernel(settings_.kernel, std::sqrt(d2) / a).w;
+    const double q = normalized_distance(id, x);
+    if (q >= 1.0) continue;
+    const double w = evaluate_kernel(settings_.kernel, q).w;
     if (w <= 0.0) continue;
     out.ids.push_back(id);
     out.psi.push_back(w);  // phi_I for now; corrected below
@@ -163,10 +257,9 @@ bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<
   for (std::size_t k = 0; k < n; ++k) {
     const Index id = out.ids[k];
     const Vec3 r = x - X_[static_cast<std::size_t>(id)];
-    const double a = a_[static_cast<std::size_t>(id)];
-    const double dist = r.norm();
-    const auto kv = evaluate_kernel(settings_.kernel, dist / a);
-    const Vec3 dphi = dist > 0.0 ? Vec3(kv.dw_dq / (a * dist) * r) : Vec3::Zero();
+    const double q = normalized_distance(id, x);
+    const auto kv = evaluate_kernel(settings_.kernel, q);
+    const Vec3 dphi = kernel_gradient(id, x, q, kv.dw_dq);
     out.grad[k] = dphi;  // d phi_I / dx for now
     const Vec3 xi = -r / scale;
     const VecN h = Basis::value(xi);

@@ -162,7 +162,6 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
     const auto scheme = integration_scheme(spec.rk);
     body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme);
-    body->boundary = rk::build_boundary_quadrature(cloud, *body->rk);
     body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk);
   } catch (const rk::ApproximationError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
@@ -230,6 +229,7 @@ rk::RKSettings rk_settings(const scene::ParamSet& p) {
   rk::RKSettings s;
   s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
   s.support = p.real("support");
+  s.shape = p.choice("support_shape") == "ellipsoid" ? rk::SupportShape::Ellipsoid : rk::SupportShape::Sphere;
   s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
   return s;
 }

@@ -23,16 +23,16 @@ constexpr double kPi = 3.14159265358979323846;
 
 // Bytes per particle of the run's state beyond the operators: X, d, v, a, x, force
 // (6 x 24), F and P per point (2 x 72), mass, inertia, volume, spacing, support radius,
-// stabilization weight and residual, the boundary quadrature's share, the kd-tree, the
+// stabilization weight and residual, a surface term's quadrature, the kd-tree, the
 // director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up.
 constexpr double kStateBytes = 1200.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
-// column and a 24-byte vector, held once in the per-row lists of the build (32 bytes and
-// the lists' spare capacity) and once flattened (28); an interpolation entry is a column and a
-// value (12) with its transpose (8), also built from per-row lists.
-constexpr double kGradientEntryBytes = 80.0;
-constexpr double kInterpolationEntryBytes = 36.0;
+// column and a 24-byte vector (28), built in blocks that are freed as they are joined
+// (a margin for the blocks in flight and the vectors' spare capacity); an interpolation
+// entry is a column and a value (12) with its transpose (8), built the same way.
+constexpr double kGradientEntryBytes = 40.0;
+constexpr double kInterpolationEntryBytes = 28.0;
 // One frame, uncompressed: the position and 22 point-field components in doubles, the
 // cells (8 connectivity ids, an offset and a type per hexahedron, in 64-bit ids).
 constexpr double kFramePointBytes = 25.0 * 8.0;
@@ -44,12 +44,13 @@ constexpr double kCheckpointBytes = 4.0 * 24.0 + 8.0;
 // The address space a process maps before its arrays (libraries, thread stacks).
 constexpr double kAddressSpaceBaseline = 1.0e9;
 
-// Particles of a support ball of radius r around a point of a cloud with spacings h,
-// clipped along each axis to the body's extent L (a thin wall holds only its layers):
-// (4/3) pi r^3 / (h0 h1 h2), times min(1, (L_i + h_i) / 2r) along each axis.
-double ball_count(double r, const Vec3& h, const Vec3& extent) {
-  double count = 4.0 / 3.0 * kPi * r * r * r / (h[0] * h[1] * h[2]);
-  for (int i = 0; i < 3; ++i) count *= std::min(1.0, (extent[i] + h[i]) / (2.0 * r));
+// Particles of a support ellipsoid with semi-axes r (a ball: all equal) around a point
+// of a cloud with spacings h, clipped along each axis to the body's extent L (a thin wall
+// holds only its layers): (4/3) pi r0 r1 r2 / (h0 h1 h2), times min(1, (L_i + h_i) / 2 r_i)
+// along each axis.
+double support_count(const Vec3& r, const Vec3& h, const Vec3& extent) {
+  double count = 4.0 / 3.0 * kPi * r[0] * r[1] * r[2] / (h[0] * h[1] * h[2]);
+  for (int i = 0; i < 3; ++i) count *= std::min(1.0, (extent[i] + h[i]) / (2.0 * r[i]));
   return std::max(count, 1.0);
 }
 
@@ -145,12 +146,18 @@ BodyEstimate estimate_body(const scene::BodySpec& spec) {
     grid.longest_edge = 1.0;
     e.size_key = fmt::format("{} (\"{}\")", key_at(c, "file"), spec.cloud_file);
   }
-  const double support = spec.rk.real("support") * grid.longest_edge;
-  e.interpolation_entries = e.particles * ball_count(support, grid.spacing, grid.extent);
+  // A ball reaches support x the longest edge along every axis; an ellipsoid support x the
+  // spacing along each (scaled as the longest edge is to the longest mean spacing: the
+  // stretched cells near a cubed sphere's corners).
+  const bool ellipsoid = spec.rk.choice("support_shape") == "ellipsoid";
+  const Vec3 reach_unit = ellipsoid ? Vec3(grid.spacing * std::max(1.0, grid.longest_edge / grid.spacing.maxCoeff()))
+                                    : Vec3::Constant(grid.longest_edge);
+  const Vec3 support = spec.rk.real("support") * reach_unit;
+  e.interpolation_entries = e.particles * support_count(support, grid.spacing, grid.extent);
   // A smoothing cell's facets reach half a spacing beyond its particle.
   const bool scni = spec.rk.choice("integration") == "scni";
-  const double cell_reach = scni ? 0.5 * grid.longest_edge : 0.0;
-  e.gradient_entries = e.particles * ball_count(support + cell_reach, grid.spacing, grid.extent);
+  const Vec3 cell_reach = scni ? Vec3(0.5 * reach_unit) : Vec3::Zero();
+  e.gradient_entries = e.particles * support_count(support + cell_reach, grid.spacing, grid.extent);
   e.memory_bytes = e.particles * kStateBytes + e.gradient_entries * kGradientEntryBytes +
                    e.interpolation_entries * kInterpolationEntryBytes;
   return e;

@@ -80,7 +80,10 @@ struct NodalInterpolation {
 
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
                                          Integration scheme);
-BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk);
+// The facets on the named surfaces of `surface_bits` (Cloud::surface_bit; 0 = the whole
+// boundary). Built by the terms that integrate over a surface, for their surface only.
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
+                                             std::uint32_t surface_bits = 0u);
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk);
 
 // sum_I Psi_I(X_J) v_I over row J: the field of the generalized values v at particle J

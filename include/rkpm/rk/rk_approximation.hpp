@@ -3,8 +3,12 @@
 //   Psi_I(x) = H(0)^T M(x)^-1 H((X_I - x)/d) phi_I(x),
 //   M(x)     = sum_J H((X_J - x)/d) H((X_J - x)/d)^T phi_J(x),
 // with H the monomial basis (linear: 1, xi; quadratic: also xi_i xi_j), phi_I the
-// kernel of particle I with spherical support radius a_I, and d a length that only
-// scales the basis so M is well conditioned. The correction makes the functions
+// kernel of particle I, and d a length that only scales the basis so M is well
+// conditioned. The kernel's support is a ball of radius a_I, or an ellipsoid
+// q_I(x)^2 = (x - X_I)^T G_I (x - X_I) < 1 shaped like the particle's own mesh edges
+// (SupportShape::Ellipsoid): in a thin wall the support then reaches as many spacings
+// through the thickness as along it, instead of being set by the longest edge in every
+// direction (which makes a refined shell's rows grow with its in-plane refinement). The correction makes the functions
 // reproduce every polynomial in H exactly: sum Psi_I = 1, sum Psi_I X_I = x, and
 // the same for gradients, to round-off.
 //
@@ -29,10 +33,12 @@ struct Cloud;
 namespace rkpm::rk {
 
 enum class Basis { Linear, Quadratic };
+enum class SupportShape { Sphere, Ellipsoid };
 
 struct RKSettings {
   KernelType kernel = KernelType::CubicBSpline;
   double support = 2.0;           // support radius / local particle spacing
+  SupportShape shape = SupportShape::Sphere;
   Basis basis = Basis::Linear;
   double max_condition = 1e10;    // reject moment matrices worse conditioned than this
 };
@@ -57,11 +63,26 @@ struct ShapeValues {
 // in-plane distance and the support would miss neighbours.
 std::vector<double> local_spacing(const particles::Cloud& cloud);
 
+// Ellipsoidal supports that follow the local spacing in each direction. With C_I the
+// covariance sum_e e e^T of particle I's mesh edges e, the metric is
+//   G_I = C_I^-1 / (support^2 s_I),   s_I = max_e e^T C_I^-1 e,
+// the smallest ellipsoid of the shape of C_I that contains every edge, scaled by the
+// support factor. C_I is invariant under rotation and sign of the edges, so on a
+// regular lattice (any orientation) the ellipsoid is the ball of radius support x edge,
+// as SupportShape::Sphere gives; on a wall of spacing h_t across and h_p along it, the
+// semi-axes are support x h_t and support x h_p.
+struct SupportEllipsoids {
+  std::vector<Mat3> metric;    // G_I [1/m^2]
+  std::vector<double> radius;  // largest semi-axis [m]: the ball that contains the ellipsoid
+};
+SupportEllipsoids ellipsoidal_supports(const particles::Cloud& cloud, double support);
+
 class RKApproximation {
  public:
   // support_radius[I] = a_I. Keeps references to `X`; both must outlive this object.
   RKApproximation(const std::vector<Vec3>& X, std::vector<double> support_radius, RKSettings settings);
-  // Convenience: a_I = settings.support * local_spacing(cloud)[I].
+  // Supports from the cloud's mesh: a_I = settings.support * local_spacing(cloud)[I], or
+  // the ellipsoids of ellipsoidal_supports (settings.shape).
   RKApproximation(const particles::Cloud& cloud, RKSettings settings);
 
   // Evaluates Psi (and grad Psi if with_gradient) at x. Returns false when the moment
@@ -81,7 +102,12 @@ class RKApproximation {
                       bool with_gradient) const;
 
   const std::vector<Vec3>& points() const { return X_; }
+  // a_I: the support's radius, or for an ellipsoid its largest semi-axis.
   const std::vector<double>& support_radius() const { return a_; }
+  // Normalised distance q = |x - X_I| / a_I or sqrt(r^T G_I r), r = x - X_I (1 outside
+  // a ball), and the kernel's gradient dw/dq dq/dx there (zero at q = 0).
+  double normalized_distance(Index id, const Vec3& x) const;
+  Vec3 kernel_gradient(Index id, const Vec3& x, double q, double dw_dq) const;
   const RKSettings& settings() const { return settings_; }
   int basis_size() const { return settings_.basis == Basis::Linear ? 4 : 10; }
 
@@ -90,8 +116,13 @@ class RKApproximation {
   bool evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
                       bool with_gradient) const;
 
+  RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings);
+  static SupportEllipsoids supports_of(const particles::Cloud& cloud, const RKSettings& settings);
+
   const std::vector<Vec3>& X_;
   std::vector<double> a_;
+  std::vector<Mat3> metric_;     // empty for spherical supports
+  std::vector<double> min_axis_;  // the ellipsoids' smallest semi-axes
   double a_max_ = 0.0;
   RKSettings settings_;
   NeighborSearch search_;

@@ -62,7 +62,6 @@ struct Body {
 
   std::unique_ptr<rk::RKApproximation> rk;  // refers to cloud.X: a Body never moves
   rk::GradientOperator gradient;            // smoothed gradients b_I(X_L), weights V_L
-  rk::BoundaryQuadrature boundary;          // surface quadrature consistent with the cells
   rk::NodalInterpolation interpolation;     // Psi_I(X_J)
   rk::Stabilization stabilization;          // removes the spurious modes of nodal integration
   double stabilization_energy = 0.0;        // at the last force evaluation [J]

@@ -43,6 +43,11 @@ ParamTable rk_section() {
           .help("Kernel function: cubic B-spline (C2) or quintic B-spline (C4)."),
       ParamSpec::real("support", "-").at_least(1.0).at_most(4.0).defaults(2.0)
           .help("Kernel support radius divided by the local particle spacing."),
+      ParamSpec::choice("support_shape", {"sphere", "ellipsoid"}).defaults(std::string("sphere"))
+          .help("sphere: a ball of radius support x the particle's longest mesh edge. ellipsoid: "
+                "shaped by the particle's mesh edges (support x the spacing in each direction), so a "
+                "thin wall's supports reach as many spacings across it as along it and the operators "
+                "stay short when the wall is refined in its plane. On a regular lattice both are the same."),
       ParamSpec::choice("basis", {"linear", "quadratic"}).defaults(std::string("linear"))
           .help("Polynomial basis the shape functions reproduce exactly."),
       ParamSpec::choice("integration", {"scni", "direct"}).defaults(std::string("scni"))

@@ -11,17 +11,16 @@
 namespace rkpm::sim {
 
 SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double pressure)
-    : body_(body), pressure_(pressure), force_(body.size(), Vec3::Zero()) {
-  const auto& q = body.boundary;
-  for (std::size_t f = 0; f < q.point.size(); ++f)
-    if (surface_bit == 0u || (q.surface_mask[f] & surface_bit)) facets_.push_back(f);
-}
+    : body_(body),
+      quadrature_(rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit)),
+      pressure_(pressure),
+      force_(body.size(), Vec3::Zero()) {}
 
 void SurfacePressure::add_forces(World&) {
-  const auto& q = body_.boundary;
+  const auto& q = quadrature_;
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
   // Serial over facets: scattering to particles in a fixed order keeps the sum deterministic.
-  for (std::size_t f : facets_) {
+  for (std::size_t f = 0; f < q.point.size(); ++f) {
     const Mat3& F = body_.F[q.owner[f]];
     const Vec3 current_area = F.determinant() * F.inverse().transpose() * q.area[f];
     for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) force_[q.col[k]] -= pressure_ * q.psi[k] * current_area;

@@ -13,7 +13,8 @@ namespace rkpm::sim {
 
 class SurfacePressure final : public Term {
  public:
-  // surface_bit = 0: every boundary facet.
+  // surface_bit = 0: every boundary facet. Builds the surface's quadrature (a body
+  // keeps none of its own: only the terms on a surface pay for it).
   SurfacePressure(Body& body, std::uint32_t surface_bit, double pressure);
   std::string name() const override { return "surface_pressure"; }
   void add_forces(World&) override;
@@ -21,7 +22,7 @@ class SurfacePressure final : public Term {
 
  private:
   Body& body_;
-  std::vector<std::size_t> facets_;  // boundary-quadrature points on the surface
+  rk::BoundaryQuadrature quadrature_;  // the surface's facets: built for this term alone
   double pressure_;
   std::vector<Vec3> force_;          // last forces, for the power
 };

@@ -30,7 +30,8 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   // Group the chosen facets by the cell that owns them (the boundary quadrature lists a
   // cell's facets together) and fold each cell's facets into one row:
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
-  const auto& q = body.boundary;
+  // The surface's quadrature is needed only here: folded, it is freed.
+  const rk::BoundaryQuadrature q = rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit);
   std::vector<Vec3> value(body.size(), Vec3::Zero());
   std::vector<char> used(body.size(), 0);
   std::vector<Index> touched;
@@ -39,7 +40,6 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
     const Index owner = q.owner[f];
     Mat3 C = Mat3::Zero();
     for (; f < q.point.size() && q.owner[f] == owner; ++f) {
-      if (surface_bit != 0u && !(q.surface_mask[f] & surface_bit)) continue;
       C.noalias() += q.point[f] * q.area[f].transpose();
       for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) {
         const Index I = q.col[k];
