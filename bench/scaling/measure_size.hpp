@@ -15,6 +15,7 @@ struct MeasureSettings {
   int steps_1t = 3;       // timed steps with 1 thread (median)
   bool split = true;      // time the parts of build_world again one by one
   std::string rbc_scene;  // examples/rbc/rbc.toml
+  std::string support_shape = "ellipsoid";  // [body.rk] support_shape of every geometry
 };
 
 // Throws on set-up errors; the caller reports them as a failed size.

@@ -25,6 +25,7 @@ struct StudySettings {
 struct StudyResult {
   TriadResult triad;
   std::vector<SizeResult> sizes;  // geometry by geometry, small to large
+  std::string support_shape;      // [body.rk] support_shape the scenes declared
 };
 
 StudyResult run_study(const StudySettings& settings);
