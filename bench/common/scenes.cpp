@@ -112,14 +112,15 @@ std::string set_key(const std::string& text, const std::string& key, const std::
   return std::regex_replace(text, line, key + " = " + value, std::regex_constants::format_first_only);
 }
 
-// Declares the body's support shape: a [body.rk] section before its material (every
-// scene here has one body and no [body.rk] of its own).
-std::string with_support_shape(const std::string& text, const std::string& shape) {
+// Declares the body's support shape and particle order: a [body.rk] section before its
+// material (every scene here has one body and no [body.rk] of its own).
+std::string with_rk(const std::string& text, const std::string& shape, const std::string& order) {
   if (text.find("[body.rk]") != std::string::npos)
-    throw std::runtime_error("the scene declares [body.rk] itself; the support shape is set by the study");
+    throw std::runtime_error("the scene declares [body.rk] itself; the study sets its support shape and order");
   const auto at = text.find("[body.material]");
   if (at == std::string::npos) throw std::runtime_error("the scene has no [body.material]");
-  return text.substr(0, at) + "[body.rk]\nsupport_shape = \"" + shape + "\"\n\n" + text.substr(at);
+  return text.substr(0, at) + "[body.rk]\nsupport_shape = \"" + shape + "\"\nparticle_order = \"" + order + "\"\n\n" +
+         text.substr(at);
 }
 
 }  // namespace
@@ -153,17 +154,18 @@ int resolution_for(Geometry g, double target) {
   return best;
 }
 
-scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene, const std::string& support_shape) {
+scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene, const std::string& support_shape,
+                        const std::string& particle_order) {
   switch (g) {
     case Geometry::Block:
-      return scene::parse_scene(with_support_shape(block_text(resolution), support_shape), "perf_block.toml");
+      return scene::parse_scene(with_rk(block_text(resolution), support_shape, particle_order), "perf_block.toml");
     case Geometry::Sphere:
-      return scene::parse_scene(with_support_shape(sphere_text(resolution), support_shape), "perf_sphere.toml");
+      return scene::parse_scene(with_rk(sphere_text(resolution), support_shape, particle_order), "perf_sphere.toml");
     case Geometry::Shell: {
       std::string text = read_text(rbc_scene);
       text = set_key(text, "face_cells", std::to_string(resolution));
       text = set_key(text, "layers", std::to_string(shell_layers));
-      return scene::parse_scene(with_support_shape(text, support_shape), rbc_scene);
+      return scene::parse_scene(with_rk(text, support_shape, particle_order), rbc_scene);
     }
   }
   throw std::logic_error("geometry");

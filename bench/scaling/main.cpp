@@ -71,6 +71,8 @@ int main(int argc, char** argv) {
   app.add_option("--support-shape", study.measure.support_shape,
                  "[body.rk] support_shape of every geometry's scene (the shell's example declares none)")
       ->check(CLI::IsMember({"sphere", "ellipsoid"}));
+  app.add_option("--particle-order", study.measure.particle_order, "[body.rk] particle_order of every geometry's scene")
+      ->check(CLI::IsMember({"input", "morton"}));
   app.add_option("--warmup", study.measure.warmup, "untimed steps before timing");
   app.add_option("--steps", study.measure.steps, "timed steps with 2 threads (median)");
   app.add_option("--steps-1t", study.measure.steps_1t, "timed steps with 1 thread (median)");

@@ -16,6 +16,7 @@ struct MeasureSettings {
   bool split = true;      // time the parts of build_world again one by one
   std::string rbc_scene;  // examples/rbc/rbc.toml
   std::string support_shape = "ellipsoid";  // [body.rk] support_shape of every geometry
+  std::string particle_order = "morton";    // [body.rk] particle_order of every geometry
 };
 
 // Throws on set-up errors; the caller reports them as a failed size.

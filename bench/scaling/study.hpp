@@ -26,6 +26,7 @@ struct StudyResult {
   TriadResult triad;
   std::vector<SizeResult> sizes;  // geometry by geometry, small to large
   std::string support_shape;      // [body.rk] support_shape the scenes declared
+  std::string particle_order;     // and their particle_order
 };
 
 StudyResult run_study(const StudySettings& settings);

@@ -3,6 +3,7 @@
 #include "materials/catalog.hpp"
 #include "rkpm/common/split_mix64.hpp"
 #include "rkpm/particles/generators.hpp"
+#include "rkpm/particles/renumber.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/scene/cloud_recipe.hpp"
 #include "rkpm/sim/body_points.hpp"
@@ -207,7 +208,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 }  // namespace
 
 particles::Cloud build_cloud(const scene::BodySpec& spec) {
-  return std::visit(Overloaded{
+  particles::Cloud cloud = std::visit(Overloaded{
                         [](const particles::BlockSpec& s) { return particles::make_block(s); },
                         [](const particles::SphereSpec& s) { return particles::make_sphere(s); },
                         [](const particles::ShellSpec& s) { return particles::make_shell(s); },
@@ -223,6 +224,8 @@ particles::Cloud build_cloud(const scene::BodySpec& spec) {
                         [](const particles::GmshImportSpec& s) { return particles::import_gmsh(s); },
                     },
                     scene::cloud_recipe(spec));
+  if (spec.rk.choice("particle_order") == "morton") particles::renumber(cloud, particles::morton_order(cloud.X));
+  return cloud;
 }
 
 rk::RKSettings rk_settings(const scene::ParamSet& p) {

@@ -48,6 +48,11 @@ ParamTable rk_section() {
                 "shaped by the particle's mesh edges (support x the spacing in each direction), so a "
                 "thin wall's supports reach as many spacings across it as along it and the operators "
                 "stay short when the wall is refined in its plane. On a regular lattice both are the same."),
+      ParamSpec::choice("particle_order", {"input", "morton"}).defaults(std::string("input"))
+          .help("input: particles numbered as the generator or file gives them (a shell: layer by layer). "
+                "morton: renumbered along a Morton space-filling curve, so that particles near in space are "
+                "near in memory and every operator row reads a compact range (faster set-up and steps on "
+                "large clouds). Output frames list the particles in this order."),
       ParamSpec::choice("basis", {"linear", "quadratic"}).defaults(std::string("linear"))
           .help("Polynomial basis the shape functions reproduce exactly."),
       ParamSpec::choice("integration", {"scni", "direct"}).defaults(std::string("scni"))
