@@ -90,34 +90,36 @@ std::string particle_label(const particles::Cloud& cloud, Index i) {
   return fmt::format("cloud '{}', particle {}", cloud.name, i);
 }
 
-// Rows of a block of consecutive integration points, built by one thread.
-struct RowPiece {
+// CSR rows of a block of consecutive points, built by one thread.
+template <class Value>
+struct CsrPiece {
   std::vector<Index> length, col;
-  std::vector<Vec3> grad;
+  std::vector<Value> value;
 };
 
-// Joins the pieces in block order into the flat operator, freeing each as it goes, so
-// the build's peak is the operator plus one piece rather than two copies of it.
-GradientOperator join(std::vector<RowPiece>& pieces, std::vector<double> weight, Index n_particles) {
-  GradientOperator op;
-  std::size_t entries = 0;
-  for (const auto& piece : pieces) entries += piece.col.size();
-  op.row_offset.assign(weight.size() + 1, 0);
-  op.col.reserve(entries);
-  op.grad.reserve(entries);
+// Joins the pieces in block order into one CSR matrix, freeing each as it goes, so a
+// build's peak is the matrix plus one piece rather than two copies of it.
+template <class Value>
+void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, std::vector<Index>& col,
+          std::vector<Value>& value) {
+  std::size_t rows = 0, entries = 0;
+  for (const auto& piece : pieces) {
+    rows += piece.length.size();
+    entries += piece.col.size();
+  }
+  row_offset.assign(rows + 1, 0);
+  col.reserve(entries);
+  value.reserve(entries);
   std::size_t r = 0;
   for (auto& piece : pieces) {
     for (const Index len : piece.length) {
-      op.row_offset[r + 1] = op.row_offset[r] + len;
+      row_offset[r + 1] = row_offset[r] + len;
       ++r;
     }
-    op.col.insert(op.col.end(), piece.col.begin(), piece.col.end());
-    op.grad.insert(op.grad.end(), piece.grad.begin(), piece.grad.end());
-    piece = RowPiece{};
+    col.insert(col.end(), piece.col.begin(), piece.col.end());
+    value.insert(value.end(), piece.value.begin(), piece.value.end());
+    piece = CsrPiece<Value>{};
   }
-  op.weight = std::move(weight);
-  op.n_columns = n_particles;
-  return op;
 }
 
 // Psi_I at each of `points` (in parallel), stored row by row in CSR form: the shape of
@@ -126,26 +128,22 @@ GradientOperator join(std::vector<RowPiece>& pieces, std::vector<double> weight,
 // The points are taken in fixed blocks, each filling a CSR piece of its own with a
 // per-thread scratch; the pieces are joined in block order (the result does not
 // depend on the threads) and freed as they are joined, so the build holds little
-// beyond the result (a ShapeValues per point, with its neighbour-query buffer, held
-// several times the result's memory).
+// beyond the result. (Keeping a ShapeValues per point, with its neighbour-query
+// buffer, held several times the result's memory.)
 void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
                          std::vector<Index>& col, std::vector<double>& psi,
                          const std::function<std::string(std::size_t)>& label) {
-  struct Piece {
-    std::vector<Index> length, col;
-    std::vector<double> psi;
-  };
   constexpr std::size_t block = 512;
   const std::size_t m = points.size();
   const std::size_t n_blocks = (m + block - 1) / block;
-  std::vector<Piece> pieces(n_blocks);
+  std::vector<CsrPiece<double>> pieces(n_blocks);
   FirstError error;
 #pragma omp parallel
   {
     ShapeValues values;
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t b = 0; b < n_blocks; ++b) {
-      Piece& piece = pieces[b];
+      auto& piece = pieces[b];
       for (std::size_t p = b * block; p < std::min(m, (b + 1) * block); ++p) {
         if (!rk.evaluate(points[p], values, false)) {
           error.record(static_cast<Index>(p), "");
@@ -153,7 +151,7 @@ void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& poi
         }
         piece.length.push_back(static_cast<Index>(values.ids.size()));
         piece.col.insert(piece.col.end(), values.ids.begin(), values.ids.end());
-        piece.psi.insert(piece.psi.end(), values.psi.begin(), values.psi.end());
+        piece.value.insert(piece.value.end(), values.psi.begin(), values.psi.end());
       }
     }
   }
@@ -163,21 +161,7 @@ void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& poi
     ShapeValues values;
     for (std::size_t p = 0; p < m; ++p) rk.evaluate_or_throw(points[p], values, false, label(p));
   }
-  std::size_t entries = 0;
-  for (const auto& piece : pieces) entries += piece.col.size();
-  row_offset.assign(m + 1, 0);
-  col.reserve(col.size() + entries);
-  psi.reserve(psi.size() + entries);
-  std::size_t p = 0;
-  for (auto& piece : pieces) {
-    for (const Index len : piece.length) {
-      row_offset[p + 1] = row_offset[p] + len;
-      ++p;
-    }
-    col.insert(col.end(), piece.col.begin(), piece.col.end());
-    psi.insert(psi.end(), piece.psi.begin(), piece.psi.end());
-    piece = Piece{};
-  }
+  join(pieces, row_offset, col, psi);
 }
 
 }  // namespace
@@ -203,7 +187,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
   const auto n = static_cast<Index>(cloud.size());
   constexpr Index block = 256;
   const Index n_blocks = (n + block - 1) / block;
-  std::vector<RowPiece> pieces(static_cast<std::size_t>(n_blocks));
+  std::vector<CsrPiece<Vec3>> pieces(static_cast<std::size_t>(n_blocks));
   std::vector<double> weight(n, 0.0);
   FirstError error;
   const particles::DualCells cells(cloud);
@@ -216,7 +200,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
     RowAccumulator acc(n);
 #pragma omp for schedule(dynamic, 1)
     for (Index b = 0; b < n_blocks; ++b) {
-      RowPiece& piece = pieces[static_cast<std::size_t>(b)];
+      auto& piece = pieces[static_cast<std::size_t>(b)];
       for (Index L = b * block; L < std::min(n, (b + 1) * block); ++L) {
         const Vec3& XL = cloud.X[L];
         if (scheme == Integration::Direct) {
@@ -226,7 +210,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
           }
           piece.length.push_back(static_cast<Index>(sv.ids.size()));
           piece.col.insert(piece.col.end(), sv.ids.begin(), sv.ids.end());
-          piece.grad.insert(piece.grad.end(), sv.grad.begin(), sv.grad.end());
+          piece.value.insert(piece.value.end(), sv.grad.begin(), sv.grad.end());
           weight[L] = cloud.volume[L];
           continue;
         }
@@ -250,7 +234,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
           error.record(L, "");
           break;
         }
-        piece.length.push_back(acc.flush(1.0 / volume, piece.col, piece.grad));
+        piece.length.push_back(acc.flush(1.0 / volume, piece.col, piece.value));
         weight[L] = volume;
       }
     }
@@ -267,7 +251,11 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
       rk.evaluate_or_throw(f.point, sv, false, what + " (a quadrature point on its smoothing-cell boundary)");
     throw ApproximationError(fmt::format("{}: its smoothing cell has no positive volume", what));
   }
-  return join(pieces, std::move(weight), n);
+  GradientOperator op;
+  join(pieces, op.row_offset, op.col, op.grad);
+  op.weight = std::move(weight);
+  op.n_columns = n;
+  return op;
 }
 
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,

@@ -50,6 +50,7 @@ SupportEllipsoids ellipsoidal_supports(const particles::Cloud& cloud, double sup
   SupportEllipsoids out;
   out.metric.resize(n);
   out.radius.assign(n, 0.0);
+  out.min_axis.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::LDLT<Mat3> ldlt(covariance[i]);
     if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || !(ldlt.rcond() > 1e-12))
@@ -68,9 +69,10 @@ SupportEllipsoids ellipsoidal_supports(const particles::Cloud& cloud, double sup
   });
   for (std::size_t i = 0; i < n; ++i) {
     out.metric[i] /= support * support * reach[i];
-    // Largest semi-axis 1 / sqrt(lambda_min(G)).
-    const double lambda_min = Eigen::SelfAdjointEigenSolver<Mat3>(out.metric[i], Eigen::EigenvaluesOnly).eigenvalues()(0);
-    out.radius[i] = 1.0 / std::sqrt(lambda_min);
+    // Semi-axes 1 / sqrt(lambda(G)), eigenvalues ascending.
+    const Vec3 lambda = Eigen::SelfAdjointEigenSolver<Mat3>(out.metric[i], Eigen::EigenvaluesOnly).eigenvalues();
+    out.radius[i] = 1.0 / std::sqrt(lambda(0));
+    out.min_axis[i] = 1.0 / std::sqrt(lambda(2));
   }
   return out;
 }
@@ -131,14 +133,12 @@ RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings setti
 RKApproximation::RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings)
     : RKApproximation(X, std::move(supports.radius), settings) {
   metric_ = std::move(supports.metric);
-  min_axis_.resize(metric_.size());
-  for (std::size_t i = 0; i < metric_.size(); ++i)
-    min_axis_[i] = 1.0 / std::sqrt(Eigen::SelfAdjointEigenSolver<Mat3>(metric_[i], Eigen::EigenvaluesOnly).eigenvalues()(2));
+  min_axis_ = std::move(supports.min_axis);
 }
 
 SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, const RKSettings& settings) {
   if (settings.shape == SupportShape::Ellipsoid) return ellipsoidal_supports(cloud, settings.support);
-  return {{}, scaled(local_spacing(cloud), settings.support)};
+  return {{}, scaled(local_spacing(cloud), settings.support), {}};
 }
 
 double RKApproximation::normalized_distance(Index id, const Vec3& x) const {

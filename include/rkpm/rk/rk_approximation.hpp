@@ -73,7 +73,8 @@ std::vector<double> local_spacing(const particles::Cloud& cloud);
 // semi-axes are support x h_t and support x h_p.
 struct SupportEllipsoids {
   std::vector<Mat3> metric;    // G_I [1/m^2]
-  std::vector<double> radius;  // largest semi-axis [m]: the ball that contains the ellipsoid
+  std::vector<double> radius;    // largest semi-axis [m]: the ball that contains the ellipsoid
+  std::vector<double> min_axis;  // smallest semi-axis [m]
 };
 SupportEllipsoids ellipsoidal_supports(const particles::Cloud& cloud, double support);
 
