@@ -12,19 +12,13 @@ std::size_t bytes(const std::vector<T>& v) {
 }
 
 std::size_t gradient_bytes(const rk::GradientOperator& g) {
-  return bytes(g.row_offset) + bytes(g.col) + bytes(g.grad) + bytes(g.weight);
+  return bytes(g.row_offset) + bytes(g.col) + bytes(g.grad) + bytes(g.grad_float) + bytes(g.weight);
 }
 
-// The rows of Psi_I(X_L): all the stabilization reads.
-std::size_t interpolation_row_bytes(const rk::NodalInterpolation& n) {
-  return bytes(n.row_offset) + bytes(n.col) + bytes(n.psi);
-}
-
-// Stored: the rows and the transpose (offset, entry and row indices) that the contact
-// and surface-tension terms use.
+// The rows of Psi_I(X_L): all that is stored (transposed products are scattered from
+// them) and all the stabilization reads.
 std::size_t interpolation_bytes(const rk::NodalInterpolation& n) {
-  const auto& t = n.transpose;
-  return interpolation_row_bytes(n) + bytes(t.offset) + bytes(t.entry) + bytes(t.row);
+  return bytes(n.row_offset) + bytes(n.col) + bytes(n.psi);
 }
 
 std::size_t material_bytes(const sim::Material& material) {
@@ -46,7 +40,7 @@ Footprint footprint(const sim::Body& b) {
                 (b.rk ? bytes(b.rk->support_radius()) : 0);
   f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
             bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
-            material_bytes(b.material) + b.force_scatter.bytes();
+            material_bytes(b.material) + b.force_scatter.bytes() + b.point_force_scatter.bytes();
   if (b.director) {
     const auto& d = *b.director;
     f.state += bytes(d.h) + bytes(d.h0) + bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence) +
@@ -83,7 +77,7 @@ Traffic internal_force_traffic(const sim::Body& b) {
   }
   if (b.stabilization.active()) {
     // r = (I - N) d, then f -= (I - N)^T W r, both from the rows of N.
-    t.operators += interpolation_row_bytes(b.interpolation) + bytes(b.stabilization.weight);
+    t.operators += interpolation_bytes(b.interpolation) + bytes(b.stabilization.weight);
     t.state_read += bytes(b.d);
     t.state_written += bytes(b.stabilization.residual);
   }

@@ -33,34 +33,33 @@ void ElasticStiffness::apply(const Field& d, Field& Kd) {
 }
 
 std::vector<Mat3> ElasticStiffness::diagonal_blocks() const {
-  rk::CsrTranspose T;  // the step needs no transpose; this preconditioner does
-  T.build(gradient_.row_offset, gradient_.col, gradient_.n_columns);
-  const auto n = static_cast<Index>(T.offset.size()) - 1;
-  std::vector<Mat3> block(static_cast<std::size_t>(n), Mat3::Zero());
+  const auto n = static_cast<std::size_t>(gradient_.n_columns);
+  std::vector<Mat3> block(n, Mat3::Zero());
   const double lambda = material_.lambda, mu = material_.mu;
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    // d/dd_I of sum_L V_L sigma(sym(d_I (x) b)) b = V_L [mu (|b|^2 1 + b b^T) + lambda b b^T].
-    Mat3 k = Mat3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) {
-      const Vec3& b = gradient_.grad[T.entry[t]];
-      k += gradient_.weight[T.row[t]] * (mu * b.squaredNorm() * Mat3::Identity() + (mu + lambda) * b * b.transpose());
+  // Scattered from the rows, serially (once per solve). A single-precision operator's
+  // own-particle correction (its row's sum, ~1e-7 of an entry) is left out: this is a
+  // preconditioner.
+  for (Index L = 0; L < gradient_.n_rows(); ++L)
+    for (Index k = gradient_.row_offset[L]; k < gradient_.row_offset[L + 1]; ++k) {
+      // d/dd_I of sum_L V_L sigma(sym(d_I (x) b)) b = V_L [mu (|b|^2 1 + b b^T) + lambda b b^T].
+      const Vec3 b = gradient_.entry(k);
+      block[gradient_.col[k]] +=
+          gradient_.weight[L] * (mu * b.squaredNorm() * Mat3::Identity() + (mu + lambda) * b * b.transpose());
     }
-    if (stabilization_.active()) {
-      // [(I - N)^T W (I - N)]_II = sum_L W_L (delta_LI - Psi_I(X_L))^2.
-      const auto& NT = interpolation_.transpose;
-      double s = 0.0;
+  if (stabilization_.active()) {
+    // [(I - N)^T W (I - N)]_II = sum_L W_L (delta_LI - Psi_I(X_L))^2.
+    const auto& N = interpolation_;
+    for (Index L = 0; L < static_cast<Index>(N.row_offset.size()) - 1; ++L) {
+      const double w = stabilization_.weight[L];
       bool has_self = false;
-      for (Index t = NT.offset[I]; t < NT.offset[I + 1]; ++t) {
-        const Index L = NT.row[t];
-        const double c = (L == I ? 1.0 : 0.0) - interpolation_.psi[NT.entry[t]];
+      for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) {
+        const Index I = N.col[k];
+        const double c = (L == I ? 1.0 : 0.0) - N.psi[k];
         has_self = has_self || L == I;
-        s += stabilization_.weight[L] * c * c;
+        block[I] += (w * c * c) * Mat3::Identity();
       }
-      if (!has_self) s += stabilization_.weight[I];
-      k += s * Mat3::Identity();
+      if (!has_self) block[L] += w * Mat3::Identity();
     }
-    block[I] = k;
   }
   return block;
 }

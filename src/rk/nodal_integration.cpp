@@ -53,13 +53,14 @@ struct RowAccumulator {
     }
     value[i] += v;
   }
-  // Appends the row (sorted by particle id) to col/grad, resets the touched slots and
-  // returns the row's length.
-  Index flush(double scale, std::vector<Index>& col, std::vector<Vec3>& grad) {
+  // Appends the row (sorted by particle id) to col/grad in the storage's precision,
+  // resets the touched slots and returns the row's length.
+  template <class Stored>
+  Index flush(double scale, std::vector<Index>& col, std::vector<Stored>& grad) {
     std::sort(touched.begin(), touched.end());
     for (Index i : touched) {
       col.push_back(i);
-      grad.push_back(value[i] * scale);
+      grad.push_back((value[i] * scale).template cast<typename Stored::Scalar>());
       value[i].setZero();
       used[i] = 0;
     }
@@ -182,12 +183,18 @@ void CsrTranspose::build(const std::vector<Index>& row_offset, const std::vector
     }
 }
 
-GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
-                                         Integration scheme) {
+namespace {
+
+// The smoothed gradients of every row, stored as `Stored` (Vec3 or Vec3f); each block's
+// piece is converted as it is filled, so the build never holds a double copy of a
+// single-precision operator.
+template <class Stored>
+void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& rk, Integration scheme,
+                         GradientOperator& op, std::vector<Stored>& grad) {
   const auto n = static_cast<Index>(cloud.size());
   constexpr Index block = 256;
   const Index n_blocks = (n + block - 1) / block;
-  std::vector<CsrPiece<Vec3>> pieces(static_cast<std::size_t>(n_blocks));
+  std::vector<CsrPiece<Stored>> pieces(static_cast<std::size_t>(n_blocks));
   std::vector<double> weight(n, 0.0);
   FirstError error;
   const particles::DualCells cells(cloud);
@@ -210,7 +217,7 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
           }
           piece.length.push_back(static_cast<Index>(sv.ids.size()));
           piece.col.insert(piece.col.end(), sv.ids.begin(), sv.ids.end());
-          piece.value.insert(piece.value.end(), sv.grad.begin(), sv.grad.end());
+          for (const Vec3& g : sv.grad) piece.value.push_back(g.template cast<typename Stored::Scalar>());
           weight[L] = cloud.volume[L];
           continue;
         }
@@ -251,10 +258,20 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
       rk.evaluate_or_throw(f.point, sv, false, what + " (a quadrature point on its smoothing-cell boundary)");
     throw ApproximationError(fmt::format("{}: its smoothing cell has no positive volume", what));
   }
-  GradientOperator op;
-  join(pieces, op.row_offset, op.col, op.grad);
+  join(pieces, op.row_offset, op.col, grad);
   op.weight = std::move(weight);
   op.n_columns = n;
+}
+
+}  // namespace
+
+GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
+                                         Integration scheme, GradientPrecision precision) {
+  GradientOperator op;
+  if (precision == GradientPrecision::Float)
+    build_gradient_rows(cloud, rk, scheme, op, op.grad_float);
+  else
+    build_gradient_rows(cloud, rk, scheme, op, op.grad);
   return op;
 }
 
@@ -283,7 +300,6 @@ NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, cons
   NodalInterpolation interp;
   shape_function_rows(rk, cloud.X, interp.row_offset, interp.col, interp.psi,
                       [&](std::size_t j) { return particle_label(cloud, static_cast<Index>(j)); });
-  interp.transpose.build(interp.row_offset, interp.col, static_cast<Index>(cloud.size()));
   return interp;
 }
 
@@ -304,9 +320,7 @@ void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std
     const int t = omp_get_thread_num();
     scatter.clear(t);
     Vec3* sum = scatter.buffer(t, 0);
-    for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L)
-      for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
-        sum[op.col[k]].noalias() += op.weight[L] * (P[L] * op.grad[k]);
+    for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) scatter_row(op, L, op.weight[L], P[L], sum);
 #pragma omp barrier
     scatter.reduce(t, 0, 1.0, f);
   }

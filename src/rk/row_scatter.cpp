@@ -49,15 +49,22 @@ void RowScatter::clear(int t) {
   for (int c = 0; c < channels_; ++c) std::fill(buffer(t, c) + lo, buffer(t, c) + hi, Vec3::Zero());
 }
 
+Vec3 RowScatter::thread_sum(int channel, Index I) const {
+  Vec3 sum = Vec3::Zero();
+  for (int s = 0; s < threads_; ++s)
+    if (I >= col_lo_[static_cast<std::size_t>(s)] && I < col_hi_[static_cast<std::size_t>(s)])
+      sum += buffers_[static_cast<std::size_t>(s * channels_ + channel)][static_cast<std::size_t>(I)];
+  return sum;
+}
+
 void RowScatter::reduce(int t, int channel, double scale, std::vector<Vec3>& out) const {
   const auto [begin, end] = static_block(n_columns_, t, threads_);
-  for (Index I = begin; I < end; ++I) {
-    Vec3 sum = Vec3::Zero();
-    for (int s = 0; s < threads_; ++s)
-      if (I >= col_lo_[static_cast<std::size_t>(s)] && I < col_hi_[static_cast<std::size_t>(s)])
-        sum += buffers_[static_cast<std::size_t>(s * channels_ + channel)][static_cast<std::size_t>(I)];
-    out[static_cast<std::size_t>(I)] = scale * sum;
-  }
+  for (Index I = begin; I < end; ++I) out[static_cast<std::size_t>(I)] = scale * thread_sum(channel, I);
+}
+
+void RowScatter::reduce_add(int t, int channel, double scale, std::vector<Vec3>& out) const {
+  const auto [begin, end] = static_block(n_columns_, t, threads_);
+  for (Index I = begin; I < end; ++I) out[static_cast<std::size_t>(I)] += scale * thread_sum(channel, I);
 }
 
 std::size_t RowScatter::bytes() const {

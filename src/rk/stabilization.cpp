@@ -1,5 +1,7 @@
 #include "rkpm/rk/stabilization.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 
 namespace rkpm::rk {
@@ -18,23 +20,30 @@ Stabilization build_stabilization(const std::vector<double>& volume, const std::
 double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, const std::vector<Vec3>& d,
                                 std::vector<Vec3>& f) {
   const auto n = static_cast<Index>(s.weight.size());
-  double energy = 0.0;
-  // r_L = d_L - sum_I Psi_I(X_L) d_I, stored pre-multiplied by W_L.
-#pragma omp parallel for schedule(static) reduction(+ : energy)
-  for (Index L = 0; L < n; ++L) {
-    const Vec3 r = interpolation_residual(N, d, L);
-    energy += 0.5 * s.weight[L] * r.squaredNorm();
-    s.residual[L] = s.weight[L] * r;
+  const int threads = omp_get_max_threads();
+  if (!s.scatter.planned_for(threads)) s.scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
+  std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
+  // r_L = d_L - sum_I Psi_I(X_L) d_I, stored pre-multiplied by W_L; then
+  // f_I -= (W r)_I - sum_L Psi_I(X_L) (W r)_L, scattered from row L.
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    s.scatter.clear(t);
+    Vec3* sum = s.scatter.buffer(t, 0);
+    for (Index L = s.scatter.row_begin(t); L < s.scatter.row_end(t); ++L) {
+      const Vec3 r = interpolation_residual(N, d, L);
+      energy[static_cast<std::size_t>(t)] += 0.5 * s.weight[L] * r.squaredNorm();
+      const Vec3 wr = s.weight[L] * r;
+      s.residual[L] = wr;
+      sum[L] += wr;
+      for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) sum[N.col[k]] -= N.psi[k] * wr;
+    }
+#pragma omp barrier
+    s.scatter.reduce_add(t, 0, -1.0, f);
   }
-  // f_I -= (W r)_I - sum_L Psi_I(X_L) (W r)_L: the transpose product as a gather.
-  const auto& T = N.transpose;
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    Vec3 back = Vec3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) back += N.psi[T.entry[t]] * s.residual[T.row[t]];
-    f[I] -= s.residual[I] - back;
-  }
-  return energy;
+  double total = 0.0;
+  for (double e : energy) total += e;
+  return total;
 }
 
 }  // namespace rkpm::rk

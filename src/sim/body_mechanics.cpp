@@ -53,8 +53,7 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
     Vec3* div = frank ? scatter.buffer(t, 1) : nullptr;
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-      const Mat3 F = rk::row_gradient(op, body.x, L);
+      const Mat3 F = rk::deformation_gradient(op, body.x, body.d, L);
       const Mat3 grad_h = frank ? rk::row_gradient(op, dir->h, L) : Mat3::Zero();
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
@@ -62,10 +61,10 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
       const Mat3 P = stress(L, F, grad_h, flux);
       body.P[L] = P;
       const double w = op.weight[L];
-      for (Index k = k0; k < k1; ++k) f[op.col[k]].noalias() += w * (P * op.grad[k]);
+      rk::scatter_row(op, L, w, P, f);
       if (frank) {
         dir->frank_flux[L] = flux;
-        for (Index k = k0; k < k1; ++k) div[op.col[k]].noalias() += w * (flux * op.grad[k]);
+        rk::scatter_row(op, L, w, flux, div);
       }
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);

@@ -1,5 +1,7 @@
 #include "rkpm/sim/body_points.hpp"
 
+#include <omp.h>
+
 namespace rkpm::sim {
 
 void physical_points(const Body& body, std::vector<Vec3>& out) {
@@ -21,12 +23,21 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
     for (Index i = 0; i < n; ++i) body.force[i] += f[i];
     return;
   }
-  const auto& T = N.transpose;
-#pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    Vec3 s = Vec3::Zero();
-    for (Index e = T.offset[I]; e < T.offset[I + 1]; ++e) s += N.psi[T.entry[e]] * f[T.row[e]];
-    body.force[I] += s;
+  auto& scatter = body.point_force_scatter;
+  const int threads = omp_get_max_threads();
+  if (!scatter.planned_for(threads)) scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    scatter.clear(t);
+    Vec3* sum = scatter.buffer(t, 0);
+    for (Index J = scatter.row_begin(t); J < scatter.row_end(t); ++J) {
+      const Vec3& fJ = f[J];
+      if (fJ.isZero(0.0)) continue;  // most particles carry no point force
+      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sum[N.col[k]] += N.psi[k] * fJ;
+    }
+#pragma omp barrier
+    scatter.reduce_add(t, 0, 1.0, body.force);
   }
 }
 

@@ -162,7 +162,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   try {
     body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
     const auto scheme = integration_scheme(spec.rk);
-    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme);
+    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme, gradient_precision(spec.rk));
     body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk);
   } catch (const rk::ApproximationError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
@@ -239,6 +239,10 @@ rk::RKSettings rk_settings(const scene::ParamSet& p) {
 
 rk::Integration integration_scheme(const scene::ParamSet& p) {
   return p.choice("integration") == "direct" ? rk::Integration::Direct : rk::Integration::SCNI;
+}
+
+rk::GradientPrecision gradient_precision(const scene::ParamSet& p) {
+  return p.choice("gradient_precision") == "float" ? rk::GradientPrecision::Float : rk::GradientPrecision::Double;
 }
 
 IntegratorSettings integrator_settings(const scene::Scene& scene) {

@@ -28,11 +28,12 @@ constexpr double kPi = 3.14159265358979323846;
 // force pass's per-thread buffers. Rounded up.
 constexpr double kStateBytes = 1200.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
-// column and a 24-byte vector (28), built in blocks that are freed as they are joined
-// (a margin for the blocks in flight and the vectors' spare capacity); an interpolation
-// entry is a column and a value (12) with its transpose (8), built the same way.
-constexpr double kGradientEntryBytes = 40.0;
-constexpr double kInterpolationEntryBytes = 28.0;
+// column and a vector of 24 bytes (double storage) or 12 (float), built in blocks that
+// are freed as they are joined (a margin of 12 for the blocks in flight and the
+// vectors' spare capacity); an interpolation entry is a column and a value (12), built
+// the same way.
+constexpr double kGradientEntryMargin = 12.0;
+constexpr double kInterpolationEntryBytes = 20.0;
 // One frame, uncompressed: the position and 22 point-field components in doubles, the
 // cells (8 connectivity ids, an offset and a type per hexahedron, in 64-bit ids).
 constexpr double kFramePointBytes = 25.0 * 8.0;
@@ -158,7 +159,9 @@ BodyEstimate estimate_body(const scene::BodySpec& spec) {
   const bool scni = spec.rk.choice("integration") == "scni";
   const Vec3 cell_reach = scni ? Vec3(0.5 * reach_unit) : Vec3::Zero();
   e.gradient_entries = e.particles * support_count(support + cell_reach, grid.spacing, grid.extent);
-  e.memory_bytes = e.particles * kStateBytes + e.gradient_entries * kGradientEntryBytes +
+  const double gradient_entry_bytes =
+      4.0 + (spec.rk.choice("gradient_precision") == "float" ? 12.0 : 24.0) + kGradientEntryMargin;
+  e.memory_bytes = e.particles * kStateBytes + e.gradient_entries * gradient_entry_bytes +
                    e.interpolation_entries * kInterpolationEntryBytes;
   return e;
 }

@@ -23,6 +23,7 @@
 #include "rkpm/rk/rk_approximation.hpp"
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace rkpm::particles {
@@ -43,17 +44,37 @@ struct CsrTranspose {
   void build(const std::vector<Index>& row_offset, const std::vector<Index>& col, Index n_columns);
 };
 
+enum class GradientPrecision { Double, Float };
+
 // A sparse matrix of 3-vectors in compressed rows. Its transposed products are
 // computed as deterministic scatters from the rows (rkpm/rk/row_scatter.hpp), so no
 // transpose is stored.
+//
+// The entries are stored in double (`grad`) or in single precision (`grad_float`, half
+// the bytes a step streams; the other vector is empty). Sums are always taken in
+// double. In single precision the stored b~_I(X_L) no longer sum to zero over a row to
+// double round-off, and a gather sum_I v_I (x) b~_I would multiply that defect by |v|
+// (a position, metres away from the origin). So the single-precision operator is used
+// in its relative form: the effective entries are b~_I for I != L and b~_L - sum_J b~_J
+// for the row's own particle, i.e. every row sums to zero exactly, which is the
+// constant-reproduction property of the exact operator. Then
+//   gather:  sum_I v_I (x) b_I   = sum_I (v_I - v_L) (x) b~_I,
+//   scatter: f_I += M b~_I, and f_L -= M sum_J b~_J,
+// are exact transposes of each other (the internal force stays the derivative of the
+// discrete energy), and the deformation gradient is F_L = I + sum_I (d_I - d_L) (x) b~_I,
+// which is exactly I at rest and errs by the storage round-off times |Grad u| otherwise.
 struct GradientOperator {
   std::vector<Index> row_offset;  // n_points + 1
   std::vector<Index> col;         // particle I of each entry
-  std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m]
+  std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m], double storage
+  std::vector<Vec3f> grad_float;  // b_I(X_L) of each entry [1/m], single-precision storage
   std::vector<double> weight;     // V_L: integration weight of each row [m^3]
   Index n_columns = 0;            // particles
 
   Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
+  bool single_precision() const { return !grad_float.empty(); }
+  // b_I(X_L) of entry k as stored (before the relative form's own-particle correction).
+  Vec3 entry(Index k) const { return single_precision() ? Vec3(grad_float[k].cast<double>()) : grad[k]; }
 };
 
 // Points on the body's surface with their outward area vectors and the shape
@@ -75,11 +96,11 @@ struct NodalInterpolation {
   std::vector<Index> row_offset;
   std::vector<Index> col;
   std::vector<double> psi;
-  CsrTranspose transpose;
 };
 
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
-                                         Integration scheme);
+                                         Integration scheme,
+                                         GradientPrecision precision = GradientPrecision::Double);
 // The facets on the named surfaces of `surface_bits` (Cloud::surface_bit; 0 = the whole
 // boundary). Built by the terms that integrate over a surface, for their surface only.
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
@@ -95,12 +116,74 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
   return s;
 }
 
-// sum_I v_I (x) b_I(X_L) over row L: F_L from positions, Grad_X h from directors, dF/dt
-// from velocities. The one gather every per-point gradient uses.
-inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {
+namespace detail {
+template <class Stored>
+Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
   Mat3 g = Mat3::Zero();
-  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) g.noalias() += v[op.col[k]] * op.grad[k].transpose();
+  if constexpr (std::is_same_v<Stored, Vec3>) {
+    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) g.noalias() += v[op.col[k]] * grad[k].transpose();
+  } else {
+    const Vec3 vL = v[L];
+    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
+      g.noalias() += (v[op.col[k]] - vL) * grad[k].template cast<double>().transpose();
+  }
   return g;
+}
+
+template <class Stored>
+void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M,
+                 Vec3* out) {
+  if constexpr (std::is_same_v<Stored, Vec3>) {
+    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) out[op.col[k]].noalias() += w * (M * grad[k]);
+  } else {
+    Vec3 row_sum = Vec3::Zero();
+    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) {
+      const Vec3 b = grad[k].template cast<double>();
+      out[op.col[k]].noalias() += w * (M * b);
+      row_sum += b;
+    }
+    out[L].noalias() -= w * (M * row_sum);
+  }
+}
+}  // namespace detail
+
+// sum_I v_I (x) b_I(X_L) over row L: Grad_X h from directors, dF/dt from velocities,
+// F_L from positions. The one gather every per-point gradient uses (in the relative
+// form for single-precision storage, see GradientOperator).
+inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {
+  return op.single_precision() ? detail::row_gradient(op, op.grad_float, v, L) : detail::row_gradient(op, op.grad, v, L);
+}
+
+// out[I] += w M b_I(X_L) over row L: the transposed product of row_gradient, for the
+// internal force (w M = V_L P_L) and the Frank term's divergence.
+inline void scatter_row(const GradientOperator& op, Index L, double w, const Mat3& M, Vec3* out) {
+  if (op.single_precision())
+    detail::scatter_row(op, op.grad_float, L, w, M, out);
+  else
+    detail::scatter_row(op, op.grad, L, w, M, out);
+}
+
+// Calls entry(I, b) for the entries of row L as the operator acts: as stored in double;
+// in single precision the stored entries and then (L, -sum_J b~_J), the relative
+// form's own-particle correction (GradientOperator). For assembling matrices (tests,
+// studies); the step uses row_gradient and scatter_row.
+template <class Entry>
+void for_each_acting_entry(const GradientOperator& op, Index L, Entry entry) {
+  Vec3 row_sum = Vec3::Zero();
+  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) {
+    const Vec3 b = op.entry(k);
+    entry(op.col[k], b);
+    row_sum += b;
+  }
+  if (op.single_precision()) entry(L, Vec3(-row_sum));
+}
+
+// F_L of a body with positions x = X + d: sum_I x_I (x) b_I(X_L) in double storage;
+// I + sum_I (d_I - d_L) (x) b~_I in single precision, exact at rest.
+inline Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Vec3>& x, const std::vector<Vec3>& d,
+                                 Index L) {
+  if (op.single_precision()) return Mat3::Identity() + detail::row_gradient(op, op.grad_float, d, L);
+  return detail::row_gradient(op, op.grad, x, L);
 }
 
 // F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).

@@ -47,10 +47,14 @@ class RowScatter {
   // block of columns of the calling thread (call inside the same parallel region,
   // after a barrier, from every thread).
   void reduce(int t, int channel, double scale, std::vector<Vec3>& out) const;
+  // The same, added to out: out[I] += scale * sum over threads.
+  void reduce_add(int t, int channel, double scale, std::vector<Vec3>& out) const;
 
   std::size_t bytes() const;
 
  private:
+  Vec3 thread_sum(int channel, Index I) const;
+
   int threads_ = 0;
   int channels_ = 0;
   Index n_columns_ = 0;

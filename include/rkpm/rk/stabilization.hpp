@@ -16,11 +16,12 @@
 // rigid-body modes exact, and adds only an O(h^2)-relative term for resolved
 // deformations (it plays the role of hourglass control in under-integrated finite
 // elements). Its force is f = -(I - N)^T W (I - N) d with N_LI = Psi_I(X_L),
-// computed as two gathers over N and its transpose.
+// computed as a gather over the rows of N and a scatter from the same rows.
 #pragma once
 
 #include "rkpm/common/types.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
+#include "rkpm/rk/row_scatter.hpp"
 
 #include <vector>
 
@@ -29,6 +30,7 @@ namespace rkpm::rk {
 struct Stabilization {
   std::vector<double> weight;  // W_L = alpha mu_L V_L / h_L^2 [N/m]; empty = no stabilization
   std::vector<Vec3> residual;  // scratch: r_L of the last evaluation
+  RowScatter scatter;          // scratch of add_stabilization_forces (the simulator's force pass has its own)
   bool active() const { return !weight.empty(); }
 };
 

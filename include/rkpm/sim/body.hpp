@@ -75,6 +75,7 @@ struct Body {
   std::vector<Vec3> force;                  // total force of this step [N]
   std::vector<Mat3> F, P;                   // per integration point
   rk::RowScatter force_scatter;             // scratch of the force pass (per-thread buffers)
+  rk::RowScatter point_force_scatter;       // scratch of add_point_forces (planned on first use)
 
   Material material;
   std::optional<DirectorField> director;

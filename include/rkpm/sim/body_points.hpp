@@ -23,7 +23,8 @@ void physical_points(const Body& body, std::vector<Vec3>& out);
 void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out);
 
 // Generalized forces of point forces at every particle: force_I += sum_J Psi_I(X_J) f_J,
-// gathered per particle I through the interpolation's transpose (parallel, fixed order).
+// scattered from the interpolation's rows into per-thread buffers summed in thread
+// order (rk/row_scatter.hpp: deterministic for a thread count, no stored transpose).
 void add_point_forces(Body& body, const std::vector<Vec3>& f);
 
 // The same for forces at a few listed particles (a surface, the pairs in contact):

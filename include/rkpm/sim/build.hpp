@@ -29,5 +29,6 @@ IntegratorSettings integrator_settings(const scene::Scene& scene);
 // The RK approximation and the nodal-integration scheme a body's [body.rk] table asks for.
 rk::RKSettings rk_settings(const scene::ParamSet& rk_table);
 rk::Integration integration_scheme(const scene::ParamSet& rk_table);
+rk::GradientPrecision gradient_precision(const scene::ParamSet& rk_table);
 
 }  // namespace rkpm::sim
