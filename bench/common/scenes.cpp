@@ -114,12 +114,14 @@ std::string set_key(const std::string& text, const std::string& key, const std::
 
 // Declares the body's support shape and particle order: a [body.rk] section before its
 // material (every scene here has one body and no [body.rk] of its own).
-std::string with_rk(const std::string& text, const std::string& shape, const std::string& order) {
+std::string with_rk(const std::string& text, const RkChoices& rk) {
   if (text.find("[body.rk]") != std::string::npos)
-    throw std::runtime_error("the scene declares [body.rk] itself; the study sets its support shape and order");
+    throw std::runtime_error("the scene declares [body.rk] itself; the study sets its [body.rk] keys");
   const auto at = text.find("[body.material]");
   if (at == std::string::npos) throw std::runtime_error("the scene has no [body.material]");
-  return text.substr(0, at) + "[body.rk]\nsupport_shape = \"" + shape + "\"\nparticle_order = \"" + order + "\"\n\n" +
+  return text.substr(0, at) +
+         fmt::format("[body.rk]\nsupport_shape = \"{}\"\nparticle_order = \"{}\"\ngradient_precision = \"{}\"\n\n",
+                     rk.support_shape, rk.particle_order, rk.gradient_precision) +
          text.substr(at);
 }
 
@@ -154,18 +156,17 @@ int resolution_for(Geometry g, double target) {
   return best;
 }
 
-scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene, const std::string& support_shape,
-                        const std::string& particle_order) {
+scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene, const RkChoices& rk) {
   switch (g) {
     case Geometry::Block:
-      return scene::parse_scene(with_rk(block_text(resolution), support_shape, particle_order), "perf_block.toml");
+      return scene::parse_scene(with_rk(block_text(resolution), rk), "perf_block.toml");
     case Geometry::Sphere:
-      return scene::parse_scene(with_rk(sphere_text(resolution), support_shape, particle_order), "perf_sphere.toml");
+      return scene::parse_scene(with_rk(sphere_text(resolution), rk), "perf_sphere.toml");
     case Geometry::Shell: {
       std::string text = read_text(rbc_scene);
       text = set_key(text, "face_cells", std::to_string(resolution));
       text = set_key(text, "layers", std::to_string(shell_layers));
-      return scene::parse_scene(with_rk(text, support_shape, particle_order), rbc_scene);
+      return scene::parse_scene(with_rk(text, rk), rbc_scene);
     }
   }
   throw std::logic_error("geometry");

@@ -29,11 +29,18 @@ constexpr int shell_layers = 5;
 int resolution_for(Geometry g, double target);
 long long particles_at(Geometry g, int resolution);
 
-// The scene at a resolution, with [body.rk] support_shape = `support_shape` ("sphere" or
-// "ellipsoid") and particle_order = `particle_order` ("input" or "morton"). The shell is read from `rbc_scene` (examples/rbc/rbc.toml) and rewritten;
-// relative paths inside it resolve against its directory.
-scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene,
-                        const std::string& support_shape = "sphere", const std::string& particle_order = "input");
+// The [body.rk] keys a study declares in every geometry's scene (the values of the
+// scene format's choices; the defaults are the format's own).
+struct RkChoices {
+  std::string support_shape = "sphere";        // sphere | ellipsoid
+  std::string particle_order = "input";        // input | morton
+  std::string gradient_precision = "double";   // double | float
+};
+
+// The scene at a resolution, with the [body.rk] keys of `rk`. The shell is read from
+// `rbc_scene` (examples/rbc/rbc.toml) and rewritten; relative paths inside it resolve
+// against its directory.
+scene::Scene make_scene(Geometry g, int resolution, const std::string& rbc_scene, const RkChoices& rk = {});
 
 // A file of the source tree (examples/...): under $RKPM_SOURCE_DIR when set, else
 // under the source directory the program was configured from.

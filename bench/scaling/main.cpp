@@ -68,11 +68,14 @@ int main(int argc, char** argv) {
   std::string revision = "unknown";
   app.add_option("--source-revision", revision, "the source revision measured, quoted in the markdown");
   app.add_option("--rbc-scene", study.measure.rbc_scene, "the RBC scene whose face_cells are refined");
-  app.add_option("--support-shape", study.measure.support_shape,
+  app.add_option("--support-shape", study.measure.rk.support_shape,
                  "[body.rk] support_shape of every geometry's scene (the shell's example declares none)")
       ->check(CLI::IsMember({"sphere", "ellipsoid"}));
-  app.add_option("--particle-order", study.measure.particle_order, "[body.rk] particle_order of every geometry's scene")
+  app.add_option("--particle-order", study.measure.rk.particle_order, "[body.rk] particle_order of every geometry's scene")
       ->check(CLI::IsMember({"input", "morton"}));
+  app.add_option("--gradient-precision", study.measure.rk.gradient_precision,
+                 "[body.rk] gradient_precision of every geometry's scene")
+      ->check(CLI::IsMember({"double", "float"}));
   app.add_option("--warmup", study.measure.warmup, "untimed steps before timing");
   app.add_option("--steps", study.measure.steps, "timed steps with 2 threads (median)");
   app.add_option("--steps-1t", study.measure.steps_1t, "timed steps with 1 thread (median)");

@@ -93,8 +93,7 @@ SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureS
   r.resolution = resolution;
   // Everything after this point is the size's own memory: scene, world, scratch.
   r.baseline_bytes = static_cast<double>(peak_rss_bytes());
-  const scene::Scene scene = bench::make_scene(geometry, resolution, settings.rbc_scene, settings.support_shape,
-                                                  settings.particle_order);
+  const scene::Scene scene = bench::make_scene(geometry, resolution, settings.rbc_scene, settings.rk);
 
   omp_set_num_threads(2);
   {

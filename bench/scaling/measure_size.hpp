@@ -15,8 +15,8 @@ struct MeasureSettings {
   int steps_1t = 3;       // timed steps with 1 thread (median)
   bool split = true;      // time the parts of build_world again one by one
   std::string rbc_scene;  // examples/rbc/rbc.toml
-  std::string support_shape = "ellipsoid";  // [body.rk] support_shape of every geometry
-  std::string particle_order = "morton";    // [body.rk] particle_order of every geometry
+  // The [body.rk] keys of every geometry: the lean set-up unless asked otherwise.
+  bench::RkChoices rk{"ellipsoid", "morton", "float"};
 };
 
 // Throws on set-up errors; the caller reports them as a failed size.

@@ -263,8 +263,9 @@ void write_markdown(const std::string& path, const StudyResult& s, const RbcRela
                     command, today(), revision, cpu_model(), std::thread::hardware_concurrency(), count(largest_n));
   md << fmt::format("Load average when the study ended: {} (other work on the machine inflates every time).\n\n",
                     load_average());
-  md << fmt::format("Every geometry's scene declares `[body.rk] support_shape = \"{}\"`, `particle_order = \"{}\"`.\n\n",
-                    s.support_shape, s.particle_order);
+  md << fmt::format("Every geometry's scene declares `[body.rk] support_shape = \"{}\"`, `particle_order = \"{}\"`, "
+                    "`gradient_precision = \"{}\"`.\n\n",
+                    s.rk.support_shape, s.rk.particle_order, s.rk.gradient_precision);
   if (largest_n < 0.9e6)
     md << "**A development run: it stops short of 1e6 particles, so the exponent targets are not assessed. "
           "Regenerate with the full command on a quiet machine before quoting these numbers.**\n\n";

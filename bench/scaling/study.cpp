@@ -53,7 +53,8 @@ std::vector<std::string> child_arguments(bench::Geometry g, int resolution, cons
   std::vector<std::string> a = {"--child",   bench::geometry_name(g), "--resolution", std::to_string(resolution),
                                 "--warmup",  std::to_string(m.warmup), "--steps",     std::to_string(m.steps),
                                 "--steps-1t", std::to_string(m.steps_1t), "--rbc-scene", m.rbc_scene,
-                                "--support-shape", m.support_shape, "--particle-order", m.particle_order};
+                                "--support-shape", m.rk.support_shape, "--particle-order", m.rk.particle_order,
+                                "--gradient-precision", m.rk.gradient_precision};
   if (!m.split) a.emplace_back("--no-split");
   return a;
 }
@@ -65,8 +66,7 @@ std::vector<std::string> triad_arguments(const StudySettings& s) {
 
 StudyResult run_study(const StudySettings& s) {
   StudyResult study;
-  study.support_shape = s.measure.support_shape;
-  study.particle_order = s.measure.particle_order;
+  study.rk = s.measure.rk;
   fmt::print(stderr, "triad: 3 arrays of {} MiB, 2 threads, best of {}\n", s.triad_array_bytes >> 20,
              s.triad_repetitions);
   const ChildOutcome triad = run_self(triad_arguments(s));

@@ -25,8 +25,7 @@ struct StudySettings {
 struct StudyResult {
   TriadResult triad;
   std::vector<SizeResult> sizes;  // geometry by geometry, small to large
-  std::string support_shape;      // [body.rk] support_shape the scenes declared
-  std::string particle_order;     // and their particle_order
+  bench::RkChoices rk;             // the [body.rk] keys the scenes declared
 };
 
 StudyResult run_study(const StudySettings& settings);
