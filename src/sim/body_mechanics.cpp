@@ -30,8 +30,10 @@ namespace {
 //   r_L = d_L - sum_I Psi_I(X_L) d_I,  f_L += W_L r_L,  f_I -= Psi_I(X_L) W_L r_L
 //                                                (the stabilization, rk/stabilization.hpp).
 // The scatter goes into per-thread buffers summed in thread order (rk/row_scatter.hpp).
-template <class Stress>
-void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
+// `grad` is the operator's storage (op.grad or op.grad_float): the precision is
+// dispatched once per pass, so the row loops inline without a branch per row.
+template <class Stored, class Stress>
+void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir, const Stress& stress) {
   const auto& op = body.gradient;
   const auto& N = body.interpolation;
   auto& stab = body.stabilization;
@@ -53,18 +55,18 @@ void force_pass(Body& body, DirectorField* dir, const Stress& stress) {
     Vec3* div = frank ? scatter.buffer(t, 1) : nullptr;
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      const Mat3 F = rk::deformation_gradient(op, body.x, body.d, L);
-      const Mat3 grad_h = frank ? rk::row_gradient(op, dir->h, L) : Mat3::Zero();
+      const Mat3 F = rk::detail::deformation_gradient(op, grad, body.x, body.d, L);
+      const Mat3 grad_h = frank ? rk::detail::row_gradient(op, grad, dir->h, L) : Mat3::Zero();
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
       body.P[L] = P;
       const double w = op.weight[L];
-      rk::scatter_row(op, L, w, P, f);
+      rk::detail::scatter_row(op, grad, L, w, P, f);
       if (frank) {
         dir->frank_flux[L] = flux;
-        rk::scatter_row(op, L, w, flux, div);
+        rk::detail::scatter_row(op, grad, L, w, flux, div);
       }
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
@@ -99,9 +101,13 @@ void compute_internal_forces(Body& body) {
   const bool frank = dir != nullptr && dir->frank;
   std::visit(
       [&](const auto& material) {
-        force_pass(body, dir, [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
+        const auto stress = [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
           return material.first_piola(L, F, grad_h, frank ? &flux : nullptr, dir);
-        });
+        };
+        if (body.gradient.single_precision())
+          force_pass(body, body.gradient.grad_float, dir, stress);
+        else
+          force_pass(body, body.gradient.grad, dir, stress);
       },
       body.material);
 }

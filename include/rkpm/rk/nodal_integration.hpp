@@ -117,33 +117,66 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
 }
 
 namespace detail {
+// The row loops below read the operator through raw pointers and accumulate in locals:
+// with the vectors' members and a Mat3 in memory, the compiler must assume each store
+// may alias them and reloads them per entry, which cost a third of the force pass.
 template <class Stored>
 Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
-  Mat3 g = Mat3::Zero();
+  const Index* col = op.col.data();
+  const Stored* b = grad.data();
+  const Vec3* vp = v.data();
+  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+  // g = sum_k v_k b_k^T, one column per component of b.
+  Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
   if constexpr (std::is_same_v<Stored, Vec3>) {
-    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) g.noalias() += v[op.col[k]] * grad[k].transpose();
+    for (Index k = k0; k < k1; ++k) {
+      const Vec3 vk = vp[col[k]];
+      g0 += vk * b[k](0);
+      g1 += vk * b[k](1);
+      g2 += vk * b[k](2);
+    }
   } else {
-    const Vec3 vL = v[L];
-    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k)
-      g.noalias() += (v[op.col[k]] - vL) * grad[k].template cast<double>().transpose();
+    const Vec3 vL = vp[L];
+    for (Index k = k0; k < k1; ++k) {
+      const Vec3 vk = vp[col[k]] - vL;
+      g0 += vk * static_cast<double>(b[k](0));
+      g1 += vk * static_cast<double>(b[k](1));
+      g2 += vk * static_cast<double>(b[k](2));
+    }
   }
+  Mat3 g;
+  g << g0, g1, g2;
   return g;
 }
 
 template <class Stored>
-void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M,
+void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M_in,
                  Vec3* out) {
+  const Mat3 M = M_in;
+  const Index* col = op.col.data();
+  const Stored* b = grad.data();
+  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
   if constexpr (std::is_same_v<Stored, Vec3>) {
-    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) out[op.col[k]].noalias() += w * (M * grad[k]);
+    for (Index k = k0; k < k1; ++k) out[col[k]].noalias() += w * (M * b[k]);
   } else {
     Vec3 row_sum = Vec3::Zero();
-    for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) {
-      const Vec3 b = grad[k].template cast<double>();
-      out[op.col[k]].noalias() += w * (M * b);
-      row_sum += b;
+    for (Index k = k0; k < k1; ++k) {
+      const Vec3 bk = b[k].template cast<double>();
+      out[col[k]].noalias() += w * (M * bk);
+      row_sum += bk;
     }
     out[L].noalias() -= w * (M * row_sum);
   }
+}
+
+// F_L in the form the storage needs (see deformation_gradient below).
+template <class Stored>
+Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& x,
+                          const std::vector<Vec3>& d, Index L) {
+  if constexpr (std::is_same_v<Stored, Vec3>)
+    return row_gradient(op, grad, x, L);
+  else
+    return Mat3::Identity() + row_gradient(op, grad, d, L);
 }
 }  // namespace detail
 
@@ -182,8 +215,8 @@ void for_each_acting_entry(const GradientOperator& op, Index L, Entry entry) {
 // I + sum_I (d_I - d_L) (x) b~_I in single precision, exact at rest.
 inline Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Vec3>& x, const std::vector<Vec3>& d,
                                  Index L) {
-  if (op.single_precision()) return Mat3::Identity() + detail::row_gradient(op, op.grad_float, d, L);
-  return detail::row_gradient(op, op.grad, x, L);
+  return op.single_precision() ? detail::deformation_gradient(op, op.grad_float, x, d, L)
+                               : detail::deformation_gradient(op, op.grad, x, d, L);
 }
 
 // F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).
