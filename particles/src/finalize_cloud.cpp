@@ -70,6 +70,12 @@ void check_elements(const Cloud& cloud) {
 
 // Two particles closer than 1e-9 of the bounding-box diagonal are duplicates:
 // they would split one physical point between two dual cells.
+//
+// Such a pair lies in one cluster of every coordinate, a cluster being a run of the
+// particles sorted by that coordinate with no gap wider than the tolerance. So the
+// check splits by x, splits each x-cluster by y and each of those by z, and compares
+// pairs only within the last clusters: O(n log n) on a lattice, where a sweep over x
+// alone would compare every pair of a lattice plane (whole planes share one x).
 void check_duplicates(const Cloud& cloud) {
   const std::vector<Vec3>& X = cloud.X;
   Vec3 lo = X[0], hi = X[0];
@@ -80,15 +86,29 @@ void check_duplicates(const Cloud& cloud) {
   const double tol = 1e-9 * (hi - lo).norm();
   std::vector<std::int32_t> order(X.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) { return X[a].x() < X[b].x(); });
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    for (std::size_t j = i + 1; j < order.size() && X[order[j]].x() - X[order[i]].x() <= tol; ++j) {
-      if ((X[order[j]] - X[order[i]]).norm() <= tol) {
-        const auto [a, b] = std::minmax(order[i], order[j]);
-        fail(cloud, "particles " + std::to_string(a) + " and " + std::to_string(b) + " coincide");
+  const auto split = [&](auto& self, std::size_t begin, std::size_t end, int axis) -> void {
+    std::sort(order.begin() + begin, order.begin() + end, [&](std::int32_t a, std::int32_t b) {
+      return X[a](axis) < X[b](axis) || (X[a](axis) == X[b](axis) && a < b);
+    });
+    for (std::size_t first = begin; first < end;) {
+      std::size_t last = first + 1;
+      while (last < end && X[order[last]](axis) - X[order[last - 1]](axis) <= tol) ++last;
+      if (last - first > 1) {
+        if (axis < 2) {
+          self(self, first, last, axis + 1);
+        } else {
+          for (std::size_t i = first; i < last; ++i)
+            for (std::size_t j = i + 1; j < last; ++j)
+              if ((X[order[j]] - X[order[i]]).norm() <= tol) {
+                const auto [a, b] = std::minmax(order[i], order[j]);
+                fail(cloud, "particles " + std::to_string(a) + " and " + std::to_string(b) + " coincide");
+              }
+        }
       }
+      first = last;
     }
-  }
+  };
+  split(split, 0, order.size(), 0);
 }
 
 struct FaceRecord {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <unordered_map>
 
 namespace rkpm::rk {
 
@@ -75,6 +76,40 @@ struct RowAccumulator {
     }
     touched.clear();
   }
+};
+
+// Shape-function values at the interior facets that two cells of one block share: the
+// first cell to reach such a facet evaluates it and leaves the values here, the second
+// reads them and applies its own (opposite) area vector, so each shared facet costs one
+// evaluation instead of two. Both cells then use the very same values, so the facet's
+// contributions cancel exactly in the integration constraint. Cleared per block: what
+// is shared depends on the fixed block split alone, not on the thread count.
+class SharedFacetValues {
+ public:
+  void clear() {
+    where_.clear();
+    ids_.clear();
+    psi_.clear();
+  }
+  void store(std::int64_t key, const ShapeValues& sv) {
+    where_.emplace(key, std::make_pair(ids_.size(), sv.ids.size()));
+    ids_.insert(ids_.end(), sv.ids.begin(), sv.ids.end());
+    psi_.insert(psi_.end(), sv.psi.begin(), sv.psi.end());
+  }
+  // Calls add(I, psi_I) for the stored values of `key`; false if none were stored.
+  template <class Add>
+  bool apply(std::int64_t key, Add add) const {
+    const auto it = where_.find(key);
+    if (it == where_.end()) return false;
+    const auto [begin, length] = it->second;
+    for (std::size_t k = begin; k < begin + length; ++k) add(ids_[k], psi_[k]);
+    return true;
+  }
+
+ private:
+  std::unordered_map<std::int64_t, std::pair<std::size_t, std::size_t>> where_;
+  std::vector<Index> ids_;
+  std::vector<double> psi_;
 };
 
 // The named surfaces a boundary face lies on: those all its nodes share (a particle on a
@@ -192,7 +227,7 @@ template <class Stored>
 void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& rk, Integration scheme,
                          GradientOperator& op, std::vector<Stored>& grad) {
   const auto n = static_cast<Index>(cloud.size());
-  constexpr Index block = 256;
+  constexpr Index block = 1024;
   const Index n_blocks = (n + block - 1) / block;
   std::vector<CsrPiece<Stored>> pieces(static_cast<std::size_t>(n_blocks));
   std::vector<double> weight(n, 0.0);
@@ -205,10 +240,13 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
     std::vector<particles::DualFacet> facets;
     std::vector<std::pair<Index, double>> near_cell;
     RowAccumulator acc(n);
+    SharedFacetValues shared;
 #pragma omp for schedule(dynamic, 1)
     for (Index b = 0; b < n_blocks; ++b) {
       auto& piece = pieces[static_cast<std::size_t>(b)];
-      for (Index L = b * block; L < std::min(n, (b + 1) * block); ++L) {
+      const Index block_begin = b * block, block_end = std::min(n, (b + 1) * block);
+      shared.clear();
+      for (Index L = block_begin; L < block_end; ++L) {
         const Vec3& XL = cloud.X[L];
         if (scheme == Integration::Direct) {
           if (!rk.evaluate(XL, sv, true)) {
@@ -230,11 +268,17 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
         bool ok = true;
         for (const auto& f : facets) {
           volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact for the closed cell
+          const bool in_block = f.neighbor >= block_begin && f.neighbor < block_end;
+          // A facet shared with an earlier cell of this block was evaluated there.
+          if (in_block && f.neighbor < L &&
+              shared.apply(f.shared_key, [&](Index I, double psi) { acc.add(I, psi * f.area); }))
+            continue;
           if (!rk.evaluate_among(f.point, near_cell, sv, false)) {
             ok = false;
             break;
           }
           for (std::size_t k = 0; k < sv.ids.size(); ++k) acc.add(sv.ids[k], sv.psi[k] * f.area);
+          if (in_block && f.neighbor > L) shared.store(f.shared_key, sv);
         }
         if (!ok || !(volume > 0.0)) {
           acc.discard();

@@ -141,15 +141,17 @@ SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, co
   return {{}, scaled(local_spacing(cloud), settings.support), {}};
 }
 
-double RKApproximation::normalized_distance(Index id, const Vec3& x) const {
+inline double RKApproximation::squared_normalized_distance(Index id, const Vec3& x) const {
   const auto i = static_cast<std::size_t>(id);
   const Vec3 r = x - X_[i];
-  if (metric_.empty()) {
-    const double d2 = r.squaredNorm();
-    if (d2 >= a_[i] * a_[i]) return 1.0;
-    return std::sqrt(d2) / a_[i];
-  }
-  return std::sqrt(std::max(0.0, r.dot(metric_[i] * r)));
+  if (metric_.empty()) return r.squaredNorm() / (a_[i] * a_[i]);
+  return std::max(0.0, r.dot(metric_[i] * r));
+}
+
+double RKApproximation::normalized_distance(Index id, const Vec3& x) const {
+  const double q2 = squared_normalized_distance(id, x);
+  if (metric_.empty() && q2 >= 1.0) return 1.0;
+  return std::sqrt(q2);
 }
 
 Vec3 RKApproximation::kernel_gradient(Index id, const Vec3& x, double q, double dw_dq) const {
@@ -220,15 +222,19 @@ bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<
   for (const auto& candidate : candidates) {
     const Index id = candidate.first;
     // The distance from x itself (the candidate's stored one may be from another centre).
-    const double q = normalized_distance(id, x);
-    if (q >= 1.0) continue;
-    const double w = evaluate_kernel(settings_.kernel, q).w;
+    const double q2 = squared_normalized_distance(id, x);
+    if (q2 >= 1.0) continue;
+    const double w = evaluate_kernel(settings_.kernel, std::sqrt(q2)).w;
     if (w <= 0.0) continue;
     out.ids.push_back(id);
     out.psi.push_back(w);  // phi_I for now; corrected below
     const VecN h = Basis::value((X_[static_cast<std::size_t>(id)] - x) / scale);
-    M.noalias() += w * h * h.transpose();
+    const VecN wh = w * h;
+    // The lower triangle only (what LDLT reads); mirrored below.
+    for (int j = 0; j < N; ++j)
+      for (int i = j; i < N; ++i) M(i, j) += wh(i) * h(j);
   }
+  M.template triangularView<Eigen::StrictlyUpper>() = M.transpose();
   out.n_neighbors = static_cast<int>(out.ids.size());
   out.condition = 0.0;
   if (out.n_neighbors < N) return false;

@@ -113,6 +113,8 @@ class RKApproximation {
   int basis_size() const { return settings_.basis == Basis::Linear ? 4 : 10; }
 
  private:
+  // q^2, without the square root the kernel's support test does not need.
+  double squared_normalized_distance(Index id, const Vec3& x) const;
   template <int N>
   bool evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
                       bool with_gradient) const;

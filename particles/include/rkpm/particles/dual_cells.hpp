@@ -29,6 +29,12 @@ struct DualFacet {
   // which tells the named surface of a particle on an edge between two surfaces
   // (e.g. a block's corner belongs to three). -1 for interior facets.
   std::int32_t face = -1;
+  // Interior facets: the particle on the other side (whose cell has the same facet
+  // with the opposite area vector) and a key naming the facet the same from both
+  // sides (element, edge, triangle), so a builder can evaluate it once for both
+  // cells. -1 for boundary pieces.
+  std::int32_t neighbor = -1;
+  std::int64_t shared_key = -1;
 };
 
 class DualCells {
