@@ -4,6 +4,9 @@ add_library(rkpm_options INTERFACE)
 # does not inherit them.
 target_compile_options(rkpm_options INTERFACE
   $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor>)
+if(RKPM_NATIVE)
+  target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:-march=native>)
+endif()
 if(RKPM_SANITIZE)
   # -O1 keeps the sanitized Debug build (assertions and debug information on) fast
   # enough to run the whole suite, which includes 30,000-particle clouds.

@@ -88,9 +88,11 @@ CaseResult run_lame_case(Scheme scheme, Resolution resolution, const CaseSetting
   const auto setup_start = std::chrono::steady_clock::now();
   rk::RKSettings rk_settings;
   rk_settings.support = settings.support;
+  rk_settings.shape = settings.support_shape;
   const rk::RKApproximation rk(cloud, rk_settings);
-  const rk::GradientOperator gradient =
-      rk::build_gradient_operator(cloud, rk, scheme == Scheme::Direct ? rk::Integration::Direct : rk::Integration::SCNI);
+  const rk::GradientOperator gradient = rk::build_gradient_operator(
+      cloud, rk, scheme == Scheme::Direct ? rk::Integration::Direct : rk::Integration::SCNI,
+      settings.gradient_precision);
   const rk::BoundaryQuadrature boundary = rk::build_boundary_quadrature(cloud, rk);
   const rk::NodalInterpolation interpolation = rk::build_nodal_interpolation(cloud, rk);
   const double alpha = scheme == Scheme::StabilizedSCNI ? settings.alpha : 0.0;

@@ -27,6 +27,8 @@ struct CaseSettings {
   LameSphere problem;
   double support = 2.0;  // support radius / local spacing (RKSettings::support)
   double alpha = 0.1;    // stabilization coefficient, used by StabilizedSCNI only
+  rk::SupportShape support_shape = rk::SupportShape::Sphere;              // [body.rk] support_shape
+  rk::GradientPrecision gradient_precision = rk::GradientPrecision::Double;  // [body.rk] gradient_precision
   SolverSettings solver;
 };
 

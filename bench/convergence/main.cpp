@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <exception>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -50,6 +51,15 @@ int main(int argc, char** argv) {
   app.add_option("--markdown", markdown_path, "markdown table output");
   app.add_option("--alpha", settings.alpha, "stabilization coefficient of scni-stabilized");
   app.add_option("--support", settings.support, "support radius / local particle spacing");
+  const std::map<std::string, rkpm::rk::SupportShape> shapes{{"sphere", rkpm::rk::SupportShape::Sphere},
+                                                              {"ellipsoid", rkpm::rk::SupportShape::Ellipsoid}};
+  app.add_option("--support-shape", settings.support_shape, "[body.rk] support_shape: sphere or ellipsoid")
+      ->transform(CLI::CheckedTransformer(shapes));
+  const std::map<std::string, rkpm::rk::GradientPrecision> precisions{{"double", rkpm::rk::GradientPrecision::Double},
+                                                                      {"float", rkpm::rk::GradientPrecision::Float}};
+  app.add_option("--gradient-precision", settings.gradient_precision,
+                 "[body.rk] gradient_precision: double or float storage of the smoothed gradients")
+      ->transform(CLI::CheckedTransformer(precisions));
   app.add_option("--tolerance", settings.solver.relative_tolerance, "CG relative residual tolerance");
   app.add_option("--max-iterations", settings.solver.max_iterations, "CG iteration limit");
   CLI11_PARSE(app, argc, argv);

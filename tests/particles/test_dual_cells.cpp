@@ -249,6 +249,17 @@ TEST(FinalizeCloud, RejectsDuplicateParticles) {
   expect_error(cloud, "particles 1 and 12 coincide");
 }
 
+TEST(FinalizeCloud, RejectsParticlesWithinTheToleranceInEveryCoordinate) {
+  Cloud cloud = two_cubes();
+  // Off node 1 by 1e-9 in x, y and z: 1.7e-9 apart, within 1e-9 of the bounding-box
+  // diagonal, but not equal in any coordinate the duplicate check sorts by.
+  cloud.X.push_back(cloud.X[1] + Vec3(1e-9, -1e-9, 1e-9));
+  for (int k = 8; k < 16; ++k) {
+    if (cloud.mesh.nodes[k] == 1) cloud.mesh.nodes[k] = 12;
+  }
+  expect_error(cloud, "particles 1 and 12 coincide");
+}
+
 TEST(FinalizeCloud, RejectsOutOfRangeIds) {
   Cloud cloud = two_cubes();
   cloud.mesh.nodes[3] = 99;
