@@ -34,13 +34,22 @@ NeighborSearch::NeighborSearch(const std::vector<Vec3>& points, int leaf_size)
 
 NeighborSearch::~NeighborSearch() = default;
 
-void NeighborSearch::query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const {
+void NeighborSearch::query_unordered(const Vec3& x, double radius,
+                                     std::vector<std::pair<Index, double>>& result) const {
   result.clear();
   if (points_.empty()) return;
   nanoflann::SearchParams params;
   params.sorted = false;
   tree_->index.radiusSearch(x.data(), radius * radius, result, params);  // squared radius
+}
+
+void NeighborSearch::sort_by_id(std::vector<std::pair<Index, double>>& result) {
   std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+void NeighborSearch::query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const {
+  query_unordered(x, radius, result);
+  sort_by_id(result);
 }
 
 std::pair<Index, double> NeighborSearch::nearest(const Vec3& x,

@@ -164,7 +164,15 @@ Vec3 RKApproximation::kernel_gradient(Index id, const Vec3& x, double q, double 
 }
 
 bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
-  search_.query(x, a_max_, out.scratch);
+  // Only the particles whose own support covers x count (evaluate_basis skips the
+  // rest): dropping them before the sort by id leaves the same list, in the same order.
+  search_.query_unordered(x, a_max_, out.scratch);
+  out.scratch.erase(std::remove_if(out.scratch.begin(), out.scratch.end(),
+                                   [&](const std::pair<Index, double>& c) {
+                                     return squared_normalized_distance(c.first, x) >= 1.0;
+                                   }),
+                    out.scratch.end());
+  NeighborSearch::sort_by_id(out.scratch);
   return evaluate_among(x, out.scratch, out, with_gradient);
 }
 
@@ -172,7 +180,7 @@ void RKApproximation::candidates(const Vec3& centre, double reach,
                                  std::vector<std::pair<Index, double>>& out) const {
   // A point within `reach` of the centre is reached only by particles within
   // a_max + reach of the centre; the relative slack covers the rounding of that bound.
-  search_.query(centre, (a_max_ + reach) * (1.0 + 1e-9), out);
+  search_.query_unordered(centre, (a_max_ + reach) * (1.0 + 1e-9), out);
   // Of those, keep the ones whose own support reaches that far: q_I is a norm, so
   // q_I(x) <= q_I(centre) + reach / b_I with b_I the support's smallest semi-axis (its
   // radius for a ball). What is dropped has phi_I = 0 at every such point, so the
@@ -186,6 +194,8 @@ void RKApproximation::candidates(const Vec3& centre, double reach,
                              return normalized_distance(c.first, centre) >= (1.0 + reach / min_axis_[i]) * slack;
                            }),
             out.end());
+  // Sorted by id after the filter, which keeps the order of what it keeps.
+  NeighborSearch::sort_by_id(out);
 }
 
 bool RKApproximation::evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,

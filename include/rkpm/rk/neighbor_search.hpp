@@ -26,6 +26,11 @@ class NeighborSearch {
   // Ids of all points with |p - x| < radius, sorted by id, with squared distances.
   // `scratch` is reused between calls to avoid allocation.
   void query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const;
+  // The same points, in an order that depends on the tree's layout: for a caller that
+  // filters the result and then sorts what is left by id (sorting thousands of
+  // candidates of which a few dozen survive cost more than the query).
+  void query_unordered(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const;
+  static void sort_by_id(std::vector<std::pair<Index, double>>& result);
 
   // The nearest point to x and its squared distance; among points at exactly that
   // distance, the lowest id (so the answer does not depend on the tree's layout).
