@@ -34,7 +34,7 @@ long long particles_at(Geometry g, int resolution);
 struct RkChoices {
   std::string support_shape = "sphere";        // sphere | ellipsoid
   std::string particle_order = "input";        // input | morton
-  std::string gradient_precision = "double";   // double | float
+  std::string gradient_precision = "float";    // float | double
 };
 
 // The scene at a resolution, with the [body.rk] keys of `rk`. The shell is read from

@@ -55,18 +55,18 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
     Vec3* div = frank ? scatter.buffer(t, 1) : nullptr;
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      const Mat3 F = rk::detail::deformation_gradient(op, grad, body.x, body.d, L);
-      const Mat3 grad_h = frank ? rk::detail::row_gradient(op, grad, dir->h, L) : Mat3::Zero();
+      const Mat3 F = rk::deformation_gradient(op, grad, body.x, body.d, L);
+      const Mat3 grad_h = frank ? rk::row_gradient(op, grad, dir->h, L) : Mat3::Zero();
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
       body.P[L] = P;
       const double w = op.weight[L];
-      rk::detail::scatter_row(op, grad, L, w, P, f);
+      rk::scatter_row(op, grad, L, w, P, f);
       if (frank) {
         dir->frank_flux[L] = flux;
-        rk::detail::scatter_row(op, grad, L, w, flux, div);
+        rk::scatter_row(op, grad, L, w, flux, div);
       }
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);

@@ -116,7 +116,10 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
   return s;
 }
 
-namespace detail {
+// The row kernels, typed by the operator's storage `grad` (op.grad or op.grad_float): a
+// pass over many rows (the force pass) dispatches on the precision once and calls these;
+// the untyped functions further below dispatch per call.
+//
 // The row loops below read the operator through raw pointers and accumulate in locals:
 // with the vectors' members and a Mat3 in memory, the compiler must assume each store
 // may alias them and reloads them per entry, which cost a third of the force pass.
@@ -178,22 +181,21 @@ Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>&
   else
     return Mat3::Identity() + row_gradient(op, grad, d, L);
 }
-}  // namespace detail
 
 // sum_I v_I (x) b_I(X_L) over row L: Grad_X h from directors, dF/dt from velocities,
 // F_L from positions. The one gather every per-point gradient uses (in the relative
 // form for single-precision storage, see GradientOperator).
 inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {
-  return op.single_precision() ? detail::row_gradient(op, op.grad_float, v, L) : detail::row_gradient(op, op.grad, v, L);
+  return op.single_precision() ? row_gradient(op, op.grad_float, v, L) : row_gradient(op, op.grad, v, L);
 }
 
 // out[I] += w M b_I(X_L) over row L: the transposed product of row_gradient, for the
 // internal force (w M = V_L P_L) and the Frank term's divergence.
 inline void scatter_row(const GradientOperator& op, Index L, double w, const Mat3& M, Vec3* out) {
   if (op.single_precision())
-    detail::scatter_row(op, op.grad_float, L, w, M, out);
+    scatter_row(op, op.grad_float, L, w, M, out);
   else
-    detail::scatter_row(op, op.grad, L, w, M, out);
+    scatter_row(op, op.grad, L, w, M, out);
 }
 
 // Calls entry(I, b) for the entries of row L as the operator acts: as stored in double;
@@ -215,8 +217,8 @@ void for_each_acting_entry(const GradientOperator& op, Index L, Entry entry) {
 // I + sum_I (d_I - d_L) (x) b~_I in single precision, exact at rest.
 inline Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Vec3>& x, const std::vector<Vec3>& d,
                                  Index L) {
-  return op.single_precision() ? detail::deformation_gradient(op, op.grad_float, x, d, L)
-                               : detail::deformation_gradient(op, op.grad, x, d, L);
+  return op.single_precision() ? deformation_gradient(op, op.grad_float, x, d, L)
+                               : deformation_gradient(op, op.grad, x, d, L);
 }
 
 // F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).
