@@ -1,5 +1,7 @@
 #include "rkpm/sim/integrator.hpp"
 
+#include "rkpm/sim/stable_step.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -28,11 +30,35 @@ double EnergyLedger::relative_error() const {
 
 Integrator::Integrator(World& world, IntegratorSettings settings) : world_(world), settings_(settings) {}
 
-double Integrator::estimate_stable_dt() const {
+// The smallest wave-speed step spacing / c over the bodies at the current state.
+double Integrator::bodies_wave_dt() const {
   double dt = std::numeric_limits<double>::infinity();
   for (const auto& b : world_.bodies) dt = std::min(dt, material_stable_dt(*b));
+  return dt;
+}
+
+// The bodies' wave-speed step times the calibration (1 unless the step is measured),
+// and each term's own limit: the calibration is measured on the bodies' material
+// stiffness together with whatever the terms add at that state, but a term that
+// stiffens later (a contact that closes) keeps the limit it states.
+double Integrator::estimate_stable_dt() const {
+  double dt = calibration_ * bodies_wave_dt();
   for (const auto& t : world_.terms) dt = std::min(dt, t->stable_dt(world_));
   return dt;
+}
+
+// The measured stable step 2 / omega_max (stable_step.hpp) over the wave-speed step at
+// the same state. The wave-speed step follows the state between calibrations (it
+// tracks the stiffening of the material with F); the ratio carries what the wave speed
+// misses: the discretisation's softer shortest modes, and the stiffness the terms add
+// (a volume constraint states no limit of its own). A ratio below 1 is kept too: the
+// measurement is then the safer bound. An iteration that finds no positive stiffness
+// leaves the calibration as it was.
+void Integrator::calibrate_stable_step() {
+  const FrequencyEstimate f = largest_frequency(world_);
+  ++calibrations_;
+  const double wave = bodies_wave_dt();
+  if (f.omega_max > 0.0 && std::isfinite(wave)) calibration_ = 2.0 / f.omega_max / wave;
 }
 
 // Forces at the new positions (the bodies' internal forces, then every term's), the
@@ -97,6 +123,7 @@ void Integrator::initialize() {
     scale_masses();
     accelerations();  // the forces do not depend on the masses
   }
+  if (settings_.measured_stable_step) calibrate_stable_step();
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
   if (settings_.dt > 0.0) {
@@ -247,6 +274,7 @@ void Integrator::check() {
 // automatic step as a ceiling.
 void Integrator::step_size_policy() {
   if (world_.step % 10 != 0) return;
+  if (settings_.measured_stable_step && world_.step % kCalibrateEvery == 0) calibrate_stable_step();
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
   if (settings_.dt > 0.0 && !dt_clamped_) {
@@ -332,6 +360,8 @@ StateRecord Integrator::save_state() const {
   s.put_real("fire.alpha", fire_.alpha());
   s.put_integer("fire.positive_steps", fire_.positive_steps());
   s.put_real("domain_size", settings_.domain_size);
+  s.put_real("stable_step.calibration", calibration_);
+  s.put_integer("stable_step.calibrations", calibrations_);
   s.put_vectors("centre", {centre_});
   return s;
 }
@@ -350,6 +380,8 @@ void Integrator::load_state(const StateRecord& s) {
   support_power_ = s.real("support_power");
   fire_ = Fire(s.real("fire.alpha"), s.integer("fire.positive_steps"));
   settings_.domain_size = s.real("domain_size");
+  calibration_ = s.real("stable_step.calibration");
+  calibrations_ = s.integer("stable_step.calibrations");
   centre_ = s.vectors("centre", 1).front();
 }
 

@@ -151,6 +151,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   if (integrator.dt_clamped())
     log << fmt::format("warning: [integrator] dt = {:.3g} s exceeds the stable step {:.3g} s; using {:.3g} s\n",
                        settings.dt, integrator.stable_dt(), integrator.dt());
+  if (settings.measured_stable_step)
+    log << fmt::format("stable step {:.4g} s: measured 2 / omega_max, {:.3g} x the wave-speed estimate\n",
+                       integrator.stable_dt(), integrator.stable_step_calibration());
 
   std::optional<History> history;
   try {
@@ -232,6 +235,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("threads", omp_get_max_threads());
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
+  if (settings.measured_stable_step) {
+    json.set("stable_step_calibration", integrator.stable_step_calibration());
+    json.set("stable_step_calibrations", integrator.calibrations());
+  }
   json.set("pvd", series->pvd_path().string());
   if (!levels.empty()) {
     io::Json list = io::Json::array();

@@ -25,6 +25,7 @@ struct IntegratorSettings {
   double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
+  bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
 };
@@ -77,6 +78,12 @@ class Integrator {
   double min_J() const { return min_J_; }
   // The stable step at the start before mass scaling (= stable_dt() at the start without it).
   double unscaled_stable_dt() const { return unscaled_stable_dt_; }
+  // measured_stable_step: the measured 2 / omega_max over the bodies' wave-speed step at
+  // the last calibration (1 without the setting), and the calibrations made so far.
+  double stable_step_calibration() const { return calibration_; }
+  std::int64_t calibrations() const { return calibrations_; }
+  // Steps between two calibrations of a run that measures its stable step.
+  static constexpr std::int64_t kCalibrateEvery = 1000;
 
   // Checkpointing: the integrator's own state as named fields (load_state throws
   // StateError naming a missing or mis-sized field).
@@ -105,6 +112,8 @@ class Integrator {
   void step_size_policy();
 
   double estimate_stable_dt() const;
+  double bodies_wave_dt() const;
+  void calibrate_stable_step();
   void scale_masses();
   double damping() const;
   double stored_energy();
@@ -121,6 +130,8 @@ class Integrator {
   double residual_ = 0.0, kinetic_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
   double unscaled_stable_dt_ = 0.0;  // the stable step before mass scaling (for the report)
+  double calibration_ = 1.0;         // applied to bodies_wave_dt() (measured_stable_step)
+  std::int64_t calibrations_ = 0;
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
   StepBook book_;
