@@ -135,6 +135,7 @@ void Integrator::initialize() {
   } else {
     dt_ = automatic;
   }
+  if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   ledger_ = EnergyLedger{};
   ledger_.kinetic = kinetic_energy(world_);
   ledger_.initial = ledger_.kinetic + stored_energy();
@@ -167,7 +168,8 @@ void Integrator::scale_masses() {
 // stable step is re-estimated.
 void Integrator::step() {
   StepBook& book = book_;
-  book.h = dt_;
+  book.h = dt();
+  if (book.h < dt_) ++motion_limited_steps_;
   book.old_term_power = term_power_;
   book.old_active_power = active_power_;
   book.damping_power = 0.0;
@@ -273,6 +275,7 @@ void Integrator::check() {
 // clamped one) takes the automatic step; FIRE grows its step by itself, up to the
 // automatic step as a ceiling.
 void Integrator::step_size_policy() {
+  if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   if (world_.step % 10 != 0) return;
   if (settings_.measured_stable_step && world_.step % kCalibrateEvery == 0) calibrate_stable_step();
   stable_dt_ = estimate_stable_dt();
@@ -287,6 +290,35 @@ void Integrator::step_size_policy() {
   } else {
     dt_ = std::min(dt_, automatic);
   }
+}
+
+// A release from a large strain accelerates particles so hard that they cross their
+// neighbours within one step at the stable step, which is a bound for small motions
+// (docs/stability.md). Per particle, the step of the displacement |v| dt + |a| dt^2 / 2
+// = kappa h is the positive root 2 kappa h / (|v| + sqrt(|v|^2 + 2 |a| kappa h)); the
+// smallest over the particles, evaluated every step, because the motion changes faster
+// than the material's stiffness.
+double Integrator::motion_limited_dt() const {
+  double dt = std::numeric_limits<double>::infinity();
+  for (const auto& bp : world_.bodies) {
+    const Body& b = *bp;
+    const auto n = static_cast<Index>(b.size());
+#pragma omp parallel for schedule(static) reduction(min : dt)
+    for (Index i = 0; i < n; ++i) {
+      const double reach = kMotionFraction * b.spacing[i];
+      const double v = b.v[i].norm(), a = b.a[i].norm();
+      const double speed = v + std::sqrt(v * v + 2.0 * a * reach);
+      if (speed > 0.0) dt = std::min(dt, 2.0 * reach / speed);
+    }
+  }
+  return dt;
+}
+
+// Dynamic runs take the policy's step or the motion limit, the smaller; a testing run
+// that allows unstable steps keeps its step as given.
+double Integrator::mode_step_limit() const {
+  if (settings_.mode != Mode::Dynamic || settings_.allow_unstable_dt) return dt_;
+  return std::min(dt_, motion_dt_);
 }
 
 void Integrator::update_convergence() {
@@ -338,7 +370,7 @@ void Integrator::check_state() {
         "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
         "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "
         "The stable step estimate is {:.3g} s.",
-        world_.step, world_.time, dt_, b.name, first, X.x(), X.y(), X.z(), b.x[first].x(), b.x[first].y(),
+        world_.step, world_.time, dt(), b.name, first, X.x(), X.y(), X.z(), b.x[first].x(), b.x[first].y(),
         b.x[first].z(), what[why], J, b.v[first].norm(), stable_dt_));
   }
   min_J_ = min_J;
@@ -361,6 +393,8 @@ StateRecord Integrator::save_state() const {
   s.put_integer("fire.positive_steps", fire_.positive_steps());
   s.put_real("domain_size", settings_.domain_size);
   s.put_real("stable_step.calibration", calibration_);
+  s.put_real("motion_dt", motion_dt_);
+  s.put_integer("motion_limited_steps", motion_limited_steps_);
   s.put_integer("stable_step.calibrations", calibrations_);
   s.put_vectors("centre", {centre_});
   return s;
@@ -381,6 +415,8 @@ void Integrator::load_state(const StateRecord& s) {
   fire_ = Fire(s.real("fire.alpha"), s.integer("fire.positive_steps"));
   settings_.domain_size = s.real("domain_size");
   calibration_ = s.real("stable_step.calibration");
+  motion_dt_ = s.real("motion_dt");
+  motion_limited_steps_ = s.integer("motion_limited_steps");
   calibrations_ = s.integer("stable_step.calibrations");
   centre_ = s.vectors("centre", 1).front();
 }

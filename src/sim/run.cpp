@@ -235,6 +235,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("threads", omp_get_max_threads());
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
+  if (!relax) json.set("motion_limited_steps", integrator.motion_limited_steps());
   if (settings.measured_stable_step) {
     json.set("stable_step_calibration", integrator.stable_step_calibration());
     json.set("stable_step_calibrations", integrator.calibrations());

@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -181,6 +182,29 @@ TEST(StableStep, TheIntegratorTakesTheMeasuredStep) {
   EXPECT_DOUBLE_EQ(integrator.stable_dt(), critical);
   EXPECT_DOUBLE_EQ(integrator.dt(), sw.settings.dt_safety * critical);
   EXPECT_EQ(integrator.calibrations(), 1);
+}
+
+// The motion limit of dynamic runs: released from a stretch of 2 (J = 2, where the
+// volumetric energy is still convex), no particle moves more than kMotionFraction of
+// its spacing in any step; the limit binds (the stable step alone would move some
+// particle farther) and lets go in some steps (the step returns to the policy's step).
+TEST(StableStep, NoParticleMovesMoreThanTheMotionFractionOfItsSpacingInAStep) {
+  testing::ScopedThreads one(1);
+  auto sw = build_from_text(block("0.0", "[2.0, 1.0, 1.0]", ""));
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  Body& b = *sw.world->bodies[0];
+  double largest = 0.0;
+  for (int s = 0; s < 300; ++s) {
+    const std::vector<Vec3> before = b.d;
+    integrator.step();
+    for (std::size_t i = 0; i < b.size(); ++i) largest = std::max(largest, (b.d[i] - before[i]).norm() / b.spacing[i]);
+  }
+  std::printf("largest move per step %.4f of the spacing; %lld of 300 steps limited by the motion\n", largest,
+              static_cast<long long>(integrator.motion_limited_steps()));
+  EXPECT_LE(largest, Integrator::kMotionFraction * (1.0 + 1e-12));
+  EXPECT_GT(integrator.motion_limited_steps(), 0);
+  EXPECT_LT(integrator.motion_limited_steps(), 300);
 }
 
 }  // namespace

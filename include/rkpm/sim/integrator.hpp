@@ -9,6 +9,7 @@
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -65,7 +66,9 @@ class Integrator {
   // keep their last good output).
   void step();
 
-  double dt() const { return dt_; }
+  // The step the next step() takes: the policy's step, and in dynamic mode no longer
+  // than the motion limit.
+  double dt() const { return mode_step_limit(); }
   double stable_dt() const { return stable_dt_; }
   // Recomputes the kinetic and stored energies at the current state and returns the ledger.
   const EnergyLedger& measure_energy();
@@ -84,6 +87,13 @@ class Integrator {
   std::int64_t calibrations() const { return calibrations_; }
   // Steps between two calibrations of a run that measures its stable step.
   static constexpr std::int64_t kCalibrateEvery = 1000;
+  // Dynamic runs: no particle moves more than this fraction of its spacing in one step.
+  static constexpr double kMotionFraction = 0.1;
+  // The largest step over which no particle moves more than kMotionFraction of its
+  // spacing at its present velocity and acceleration (infinite at rest).
+  double motion_limited_dt() const;
+  // Steps so far that the motion limit shortened.
+  std::int64_t motion_limited_steps() const { return motion_limited_steps_; }
 
   // Checkpointing: the integrator's own state as named fields (load_state throws
   // StateError naming a missing or mis-sized field).
@@ -113,6 +123,7 @@ class Integrator {
 
   double estimate_stable_dt() const;
   double bodies_wave_dt() const;
+  double mode_step_limit() const;
   void calibrate_stable_step();
   void scale_masses();
   double damping() const;
@@ -131,6 +142,8 @@ class Integrator {
   double energy_scale_ = 0.0;
   double unscaled_stable_dt_ = 0.0;  // the stable step before mass scaling (for the report)
   double calibration_ = 1.0;         // applied to bodies_wave_dt() (measured_stable_step)
+  double motion_dt_ = std::numeric_limits<double>::infinity();  // motion_limited_dt() after the last step
+  std::int64_t motion_limited_steps_ = 0;
   std::int64_t calibrations_ = 0;
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
