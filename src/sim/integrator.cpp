@@ -57,6 +57,7 @@ double Integrator::estimate_stable_dt() const {
 void Integrator::calibrate_stable_step() {
   const FrequencyEstimate f = largest_frequency(world_);
   ++calibrations_;
+  force_evaluations_ += f.iterations + 2;  // and the state's own forces, before and after
   const double wave = bodies_wave_dt();
   if (f.omega_max > 0.0 && std::isfinite(wave)) calibration_ = 2.0 / f.omega_max / wave;
 }
@@ -66,6 +67,7 @@ void Integrator::calibrate_stable_step() {
 // goes to the ledger), and the accelerations a = f / m with the lumped masses.
 void Integrator::forces_and_accelerations() {
   compute_forces(world_);
+  ++force_evaluations_;
   support_power_ = 0.0;
   for (auto& bp : world_.bodies) support_power_ += bp->constraints.transform_forces(bp->force);
   accelerations();
@@ -395,6 +397,7 @@ StateRecord Integrator::save_state() const {
   s.put_real("stable_step.calibration", calibration_);
   s.put_real("motion_dt", motion_dt_);
   s.put_integer("motion_limited_steps", motion_limited_steps_);
+  s.put_integer("force_evaluations", force_evaluations_);
   s.put_integer("stable_step.calibrations", calibrations_);
   s.put_vectors("centre", {centre_});
   return s;
@@ -417,6 +420,7 @@ void Integrator::load_state(const StateRecord& s) {
   calibration_ = s.real("stable_step.calibration");
   motion_dt_ = s.real("motion_dt");
   motion_limited_steps_ = s.integer("motion_limited_steps");
+  force_evaluations_ = s.integer("force_evaluations");
   calibrations_ = s.integer("stable_step.calibrations");
   centre_ = s.vectors("centre", 1).front();
 }

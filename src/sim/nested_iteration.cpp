@@ -87,6 +87,7 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
     run.factor = factors[l];
     run.particles = previous->particle_count();
     run.steps = previous->step;
+    run.force_evaluations = integrator.force_evaluations();
     run.residual = integrator.residual();
     run.converged = integrator.converged();
     if (l + 1 == factors.size()) carry_state(*previous, world);

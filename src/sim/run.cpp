@@ -235,6 +235,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("threads", omp_get_max_threads());
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
+  json.set("force_evaluations", integrator.force_evaluations());
   if (!relax) json.set("motion_limited_steps", integrator.motion_limited_steps());
   if (settings.measured_stable_step) {
     json.set("stable_step_calibration", integrator.stable_step_calibration());
@@ -248,6 +249,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       j.set("factor", l.factor);
       j.set("particles", static_cast<std::int64_t>(l.particles));
       j.set("steps", l.steps);
+      j.set("force_evaluations", l.force_evaluations);
       j.set("wall_time", l.wall_time);
       j.set("residual", l.residual);
       j.set("converged", l.converged);

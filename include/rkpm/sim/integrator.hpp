@@ -92,6 +92,10 @@ class Integrator {
   // The largest step over which no particle moves more than kMotionFraction of its
   // spacing at its present velocity and acceleration (infinite at rest).
   double motion_limited_dt() const;
+  // Evaluations of every force so far (one per step, one at the start, and the stable
+  // step's calibrations): the cost measure of the relaxation study, which wall time
+  // on a shared machine is not.
+  std::int64_t force_evaluations() const { return force_evaluations_; }
   // Steps so far that the motion limit shortened.
   std::int64_t motion_limited_steps() const { return motion_limited_steps_; }
 
@@ -144,6 +148,7 @@ class Integrator {
   double calibration_ = 1.0;         // applied to bodies_wave_dt() (measured_stable_step)
   double motion_dt_ = std::numeric_limits<double>::infinity();  // motion_limited_dt() after the last step
   std::int64_t motion_limited_steps_ = 0;
+  std::int64_t force_evaluations_ = 0;
   std::int64_t calibrations_ = 0;
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only

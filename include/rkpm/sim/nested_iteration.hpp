@@ -17,7 +17,8 @@ namespace rkpm::sim {
 struct LevelRun {
   double factor = 0.0;          // resolution factor of [integrator] nested_levels
   std::size_t particles = 0;
-  std::int64_t steps = 0;       // relaxation steps = force evaluations after the first
+  std::int64_t steps = 0;       // relaxation steps
+  std::int64_t force_evaluations = 0;  // Integrator::force_evaluations at the level's end
   double wall_time = 0.0;       // set-up, relaxation and the transfer to the next level [s]
   double residual = 0.0;        // at the level's end (the relaxation's force measure)
   bool converged = false;

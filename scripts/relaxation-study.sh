@@ -1,0 +1,139 @@
+#!/usr/bin/env bash
+# Relaxation study (docs/relaxation.md): the cost of reaching static equilibrium with
+# each relaxation variant against particle count. For the red-blood-cell ladder
+# (examples/rbc/rbc.toml at several face_cells, 5 layers) and for the contact scene
+# examples/spread_cell/spread_cell.toml, every variant runs to the scene's own
+# criterion; the study records steps, force evaluations (coarse levels included),
+# wall time and where the run landed (h_min/h_max for the RBC), fits the exponent of
+# wall time and of force evaluations against particle count per variant, and writes
+# OUT_DIR/{relaxation.csv, relaxation-cost.png, table.md}.
+# Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS...]
+#   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles; the two largest take
+#   about an hour each with plain FIRE on 2 cores). RKPM_VARIANTS selects variants
+#   (default "fire measured nested mass_scaling"). A run whose directory holds a
+#   summary.json is kept, so the study can be completed in several sittings.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+out=${2:-$here/relaxation-study}
+shift $(( $# > 2 ? 2 : $# ))
+face_cells=("$@")
+[ ${#face_cells[@]} -eq 0 ] && face_cells=(12 20 32 48 64)
+read -r -a variants <<< "${RKPM_VARIANTS:-fire measured nested mass_scaling}"
+threads=${OMP_NUM_THREADS:-2}
+rkpm=$build/src/app/rkpm
+[ -x "$rkpm" ] || { echo "relaxation-study.sh: $rkpm is not built" >&2; exit 1; }
+command -v gnuplot >/dev/null || { echo "relaxation-study.sh: gnuplot is required for the plot" >&2; exit 1; }
+mkdir -p "$out"
+
+# The [integrator] lines each variant adds to the scene.
+variant_keys() {
+  case $1 in
+    fire) echo "" ;;
+    measured) echo 'stable_step = "measured"' ;;
+    nested) echo 'nested_levels = [0.375, 0.625]' ;;
+    mass_scaling) echo 'mass_scaling = true' ;;
+    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling)" >&2; exit 2 ;;
+  esac
+}
+
+# run_case TAG SCENE_FILE VARIANT: the scene with the variant's keys, run to its criterion.
+# The copy lives in OUT_DIR, so the files the scene names (file = "...") are made
+# absolute against the directory of the original.
+run_case() {
+  local tag=$1 scene=$2 variant=$3 keys dir
+  keys=$(variant_keys "$variant")
+  dir=$(cd "$(dirname "$scene")" && pwd)
+  [ -f "$out/$tag/summary.json" ] && { echo "$tag: done before, kept"; return; }
+  awk -v keys="$keys" -v dir="$dir" '
+    /^file = "[^\/]/ { sub(/^file = "/, "file = \"" dir "/") }
+    { print }
+    /^\[integrator\]/ && keys != "" { print keys }' "$scene" > "$out/$tag.toml"
+  echo "$tag: running"
+  OMP_NUM_THREADS=$threads "$rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
+}
+
+for variant in "${variants[@]}"; do
+  for fc in "${face_cells[@]}"; do
+    sed -e "s/^face_cells = .*/face_cells = $fc/" "$here/examples/rbc/rbc.toml" > "$out/rbc_fc$fc.base.toml"
+    run_case "rbc_fc${fc}_$variant" "$out/rbc_fc$fc.base.toml" "$variant"
+  done
+  # The contact scene's imported substrate cannot be coarsened: no nested levels there.
+  [ "$variant" = nested ] || run_case "spread_cell_$variant" "$here/examples/spread_cell/spread_cell.toml" "$variant"
+done
+
+python3 - "$out" "${variants[@]}" <<'PY'
+import csv, glob, json, math, os, sys
+out, variants = sys.argv[1], sys.argv[2:]
+rows = []
+for path in sorted(glob.glob(f"{out}/*/summary.json")):
+    tag = os.path.basename(os.path.dirname(path))
+    scene, variant = ("rbc", tag.split("_", 2)[2]) if tag.startswith("rbc_") else ("spread_cell", tag.split("_", 2)[2])
+    if variant not in variants:
+        continue
+    s = json.load(open(path))
+    levels = s.get("nested_levels", [])
+    shape = s.get("shape", {})
+    rows.append(dict(
+        scene=scene, variant=variant, particles=s["total_particles"], steps=s["steps"],
+        level_steps=sum(l["steps"] for l in levels),
+        force_evaluations=s.get("force_evaluations", s["steps"] + 1) + sum(l.get("force_evaluations", l["steps"] + 1) for l in levels),
+        wall_s=round(s["wall_time"], 1), status=s["status"], converged=s.get("converged", ""),
+        h_ratio=round(shape["h_min_over_h_max"], 3) if shape else "",
+        contact_pairs=s.get("wall_contact cell inner", {}).get("max_active_pairs", "")))
+if not rows:
+    sys.exit("relaxation-study.sh: no finished runs")
+rows.sort(key=lambda r: (r["scene"], r["variant"], r["particles"]))
+fields = list(rows[0].keys())
+with open(f"{out}/relaxation.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=fields)
+    w.writeheader()
+    w.writerows(rows)
+
+def exponent(points):  # least-squares slope of log y against log x
+    if len(points) < 2:
+        return None
+    lx = [math.log(x) for x, _ in points]; ly = [math.log(y) for _, y in points]
+    mx, my = sum(lx) / len(lx), sum(ly) / len(ly)
+    sxx = sum((a - mx) ** 2 for a in lx)
+    return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else None
+
+with open(f"{out}/table.md", "w") as f:
+    f.write("| scene | variant | particles | steps (fine) | coarse-level steps | force evaluations | wall [s] | status | h_min/h_max | contact pairs (max) |\n")
+    f.write("|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n")
+    for r in rows:
+        f.write(f"| {r['scene']} | {r['variant']} | {r['particles']:,} | {r['steps']:,} | {r['level_steps']:,} | "
+                f"{r['force_evaluations']:,} | {r['wall_s']} | {r['status']} | {r['h_ratio']} | {r['contact_pairs']} |\n")
+    f.write("\n| variant | RBC sizes | exponent of wall time | exponent of force evaluations |\n|---|---|---:|---:|\n")
+    for v in variants:
+        pts = [r for r in rows if r["scene"] == "rbc" and r["variant"] == v]
+        if len(pts) < 2:
+            continue
+        ew = exponent([(r["particles"], r["wall_s"]) for r in pts])
+        ef = exponent([(r["particles"], r["force_evaluations"]) for r in pts])
+        f.write(f"| {v} | {pts[0]['particles']:,} - {pts[-1]['particles']:,} | {ew:.2f} | {ef:.2f} |\n")
+    for v in variants:
+        pts = [r for r in rows if r["scene"] == "rbc" and r["variant"] == v]
+        with open(f"{out}/rbc_{v}.dat", "w") as d:
+            for r in pts:
+                d.write(f"{r['particles']} {r['wall_s']} {r['force_evaluations']}\n")
+PY
+
+plots=""
+for v in "${variants[@]}"; do
+  [ -s "$out/rbc_$v.dat" ] && plots+="${plots:+, }'$out/rbc_$v.dat' using 1:2 with linespoints title '$v'"
+done
+if [ -n "$plots" ]; then
+  gnuplot <<EOF
+set terminal pngcairo size 800,560 noenhanced
+set output '$out/relaxation-cost.png'
+set logscale xy
+set xlabel 'particles'
+set ylabel 'wall time to equilibrium [s]'
+set title 'RBC relaxation (examples/rbc/rbc.toml, $threads threads)'
+set key top left
+set grid
+plot $plots
+EOF
+fi
+echo "wrote $out/relaxation.csv, $out/table.md and $out/relaxation-cost.png"
