@@ -111,6 +111,7 @@ class Integrator {
     double old_term_power = 0.0, old_active_power = 0.0;  // at the start of the step [W]
     double damping_power = 0.0;                 // c sum_I m_I |v_I|^2 at the half step [W]
     double fire_dissipated = 0.0;               // kinetic energy removed by FIRE [J]
+    double kinetic_of_motion = 0.0;             // kinetic energy after the second kick, before FIRE [J]
     std::vector<double> director_energy;        // per LCE body, in body order [J]
   };
 
@@ -122,7 +123,7 @@ class Integrator {
   void fire(StepBook& book);
   void director(StepBook& book);
   void ledger(const StepBook& book);
-  void check();  // throws BlowUp
+  void check(double kinetic_of_motion);  // throws BlowUp
   void step_size_policy();
 
   double estimate_stable_dt() const;
@@ -134,7 +135,7 @@ class Integrator {
   double stored_energy();
   double power_of_terms() const;
   void check_state();  // throws BlowUp
-  void update_convergence();
+  void update_convergence(double kinetic_of_motion);
 
   World& world_;
   IntegratorSettings settings_;
