@@ -13,14 +13,14 @@ set(rkpm_internal_includes ${CMAKE_INSTALL_INCLUDEDIR}/rkpm/internal)
 foreach(target rkpm_sim rkpm_scene rkpm_materials)
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${rkpm_internal_includes}>)
 endforeach()
-foreach(target rkpm_sim rkpm_scene rkpm_materials rkpm_io rkpm_rk rkpm_particles)
+foreach(target rkpm_sim rkpm_scene rkpm_materials rkpm_io rkpm_par rkpm_rk rkpm_particles)
   target_include_directories(${target} PUBLIC $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
 endforeach()
 # One name for everything: rkpm::rkpm.
 set_target_properties(rkpm_core PROPERTIES EXPORT_NAME rkpm)
 
 install(TARGETS rkpm RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS rkpm_core rkpm_sim rkpm_scene rkpm_io rkpm_rk rkpm_materials rkpm_particles rkpm_options
+install(TARGETS rkpm_core rkpm_sim rkpm_scene rkpm_io rkpm_par rkpm_rk rkpm_materials rkpm_particles rkpm_options
         EXPORT rkpmTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -24,6 +24,8 @@ packages=(
   libgmsh-dev                      # Gmsh 4.8 C++ API: .msh import and .geo meshing
   libtomlplusplus-dev              # toml++ 3.3: scene files
   libcli11-dev                     # CLI11: command line
+  libopenmpi-dev openmpi-bin       # OpenMPI 4.1: distributed runs (mpirun), the 2-rank tests
+  libmetis-dev                     # METIS 5.1: partition of the bodies over the ranks
   libfmt-dev                       # fmt: messages
   libgtest-dev                     # GoogleTest: the test suite
   libbenchmark-dev                 # Google Benchmark: bench/

@@ -3,6 +3,7 @@
 //   rkpm shape SCENE.toml FRAME.vtu|RUN_DIR [--body NAME] [--csv FILE]
 //   rkpm check SCENE.toml [--out DIR] [--memory-limit SIZE]
 //   rkpm params [--markdown]
+#include "rkpm/par/comm.hpp"
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/run.hpp"
@@ -19,6 +20,7 @@
 #endif
 
 int main(int argc, char** argv) {
+  rkpm::par::Session mpi(argc, argv);  // joins the run's ranks under mpirun; nothing otherwise
   CLI::App app{"rkpm: reproducing-kernel particle simulator for cell mechanics (active liquid-crystal "
                "elastomer cells on Mooney-Rivlin substrates)"};
   app.set_version_flag("--version", std::string("rkpm ") + RKPM_VERSION);

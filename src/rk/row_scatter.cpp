@@ -14,8 +14,8 @@ std::pair<Index, Index> static_block(Index n, int t, int threads) {
 }
 }  // namespace
 
-void RowScatter::plan(Index n_rows, Index n_columns, const std::vector<Pattern>& patterns, int threads,
-                      int channels) {
+void RowScatter::plan(Index first_row, Index end_row, Index n_columns, const std::vector<Pattern>& patterns,
+                      int threads, int channels) {
   threads_ = std::max(threads, 1);
   channels_ = channels;
   n_columns_ = n_columns;
@@ -23,7 +23,9 @@ void RowScatter::plan(Index n_rows, Index n_columns, const std::vector<Pattern>&
   col_lo_.assign(static_cast<std::size_t>(threads_), n_columns);
   col_hi_.assign(static_cast<std::size_t>(threads_), 0);
   for (int t = 0; t < threads_; ++t) {
-    const auto [begin, end] = static_block(n_rows, t, threads_);
+    auto [begin, end] = static_block(end_row - first_row, t, threads_);
+    begin += first_row;
+    end += first_row;
     row_begin_[static_cast<std::size_t>(t)] = begin;
     row_begin_[static_cast<std::size_t>(t) + 1] = end;
     Index lo = n_columns, hi = 0;

@@ -21,6 +21,15 @@ void update_positions(Body& body) {
 }
 
 namespace {
+// The ghosts' current displacements, positions and (for the Frank term) directors,
+// from their owners.
+void pull_ghosts(Body& body, DirectorField* dir) {
+  body.ghosts.pull(body.d);
+  for (const auto& from_owner : body.ghosts.ghosts_by_owner())
+    for (Index g : from_owner) body.x[g] = body.cloud.X[g] + body.d[g];
+  if (dir != nullptr) body.ghosts.pull(dir->h);
+}
+
 // One pass over the rows of the gradient operator (and of the interpolation operator
 // when the body is stabilized), so each row is read from memory once per step:
 //   F_L = sum_I x_I (x) b_I(X_L)                 (and Grad_X h with the Frank term),
@@ -44,8 +53,10 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
   if (!scatter.planned_for(threads)) {
     std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
     if (stabilized) patterns.push_back({&N.row_offset, &N.col});
-    scatter.plan(op.n_rows(), static_cast<Index>(body.size()), patterns, threads, frank ? 2 : 1);
+    scatter.plan(body.owned_begin(), body.owned_end(), static_cast<Index>(body.size()), patterns, threads,
+                 frank ? 2 : 1);
   }
+  if (body.distributed()) pull_ghosts(body, frank ? dir : nullptr);
   std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
@@ -81,9 +92,15 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
 #pragma omp barrier
     // f holds f_int plus the stabilization's resistance; the body's force is minus that.
     scatter.reduce(t, 0, -1.0, body.force);
-    if (frank) {
-      scatter.reduce(t, 1, 1.0, dir->frank_divergence);
+    if (frank) scatter.reduce(t, 1, 1.0, dir->frank_divergence);
 #pragma omp barrier
+#pragma omp master
+    if (body.distributed()) {
+      body.ghosts.push_add(body.force);
+      if (frank) body.ghosts.push_add(dir->frank_divergence);
+    }
+#pragma omp barrier
+    if (frank) {
       // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
 #pragma omp for schedule(static)
       for (Index I = 0; I < static_cast<Index>(body.size()); ++I) dir->frank_divergence[I] /= -body.cloud.volume[I];
@@ -113,13 +130,13 @@ void compute_internal_forces(Body& body) {
 }
 
 double strain_energy(const Body& body) {
-  const auto n = static_cast<Index>(body.F.size());
   const DirectorField* dir = director_of(body);
   double total = 0.0;
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(+ : total)
-        for (Index L = 0; L < n; ++L) total += body.gradient.weight[L] * material.energy(L, body.F[L], dir);
+        for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
+          total += body.gradient.weight[L] * material.energy(L, body.F[L], dir);
       },
       body.material);
   return total + body.stabilization_energy;
@@ -176,13 +193,12 @@ void particle_wave_steps(const Body& body, std::vector<double>& steps) {
 }
 
 double material_stable_dt(const Body& body) {
-  const auto n = static_cast<Index>(body.F.size());
   const DirectorField* dir = director_of(body);
   double dt = std::numeric_limits<double>::infinity();
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(min : dt)
-        for (Index L = 0; L < n; ++L)
+        for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
           dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density) *
                                 std::sqrt(body.inertia[L] / body.mass[L]));
       },

@@ -3,6 +3,7 @@
 #include "materials/catalog.hpp"
 #include "rkpm/common/split_mix64.hpp"
 #include "rkpm/particles/generators.hpp"
+#include "rkpm/par/partition.hpp"
 #include "rkpm/particles/renumber.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/scene/cloud_recipe.hpp"
@@ -55,9 +56,15 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
     const Vec3 h = p.vec3("vector").normalized();
     std::fill(dir.h.begin(), dir.h.end(), h);
   } else if (initial == "radial") {
+    // A particle at the centre gets e_z. "At the centre" allows for the centroid's
+    // round-off, which depends on the particle order: a plain r != 0 would give the
+    // centre particle a round-off direction that changes with the numbering (Morton
+    // order, the partition of a distributed run).
+    double extent = 0.0;
+    for (std::size_t i = 0; i < n; ++i) extent = std::max(extent, (cloud.X[i] - centre).norm());
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 r = cloud.X[i] - centre;
-      dir.h[i] = r.norm() > 0.0 ? Vec3(r.normalized()) : Vec3::UnitZ();
+      dir.h[i] = r.norm() > 1e-9 * extent ? Vec3(r.normalized()) : Vec3::UnitZ();
     }
   } else {
     std::vector<Vec3> surface;
@@ -145,7 +152,8 @@ std::vector<ConstrainedComponent> constrained_components(const scene::BodySpec& 
   return out;
 }
 
-std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed, std::string& warning) {
+std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint64_t seed, const par::Comm& comm,
+                                 std::string& warning) {
   auto body = std::make_unique<Body>();
   body->name = spec.name();
   body->id = id;
@@ -156,6 +164,16 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.cloud), body->name, e.what()));
   }
   body->cloud.name = body->name;
+  par::Partition partition;
+  if (comm.parallel()) {
+    try {
+      partition = par::partition_cloud(body->cloud, comm.size());
+    } catch (const std::invalid_argument& e) {
+      throw SetupError(fmt::format("{} body '{}': {}", where(spec.cloud), body->name, e.what()));
+    }
+    particles::renumber(body->cloud, partition.order);
+    body->original_id.assign(partition.order.begin(), partition.order.end());
+  }
   const auto& cloud = body->cloud;
   const std::size_t n = cloud.size();
 
@@ -178,12 +196,15 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   const Vec3 velocity = spec.initial.vec3("velocity");
   const double noise = spec.initial.real("random_velocity");
   SplitMix64 random(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id));
+  // The noise is drawn in the one-rank numbering, so every rank count starts alike.
+  std::vector<Vec3> kick(noise > 0.0 ? n : 0);
+  for (auto& k : kick) k = noise * Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
   body->d.resize(n);
   body->v.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     body->d[i] = (stretch.array() - 1.0).matrix().cwiseProduct(cloud.X[i] - centre);
     body->v[i] = velocity;
-    if (noise > 0.0) body->v[i] += noise * Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
+    if (!kick.empty()) body->v[i] += kick[body->original_id.empty() ? i : static_cast<std::size_t>(body->original_id[i])];
   }
   body->a.assign(n, Vec3::Zero());
   body->x.resize(n);
@@ -201,6 +222,24 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
   } catch (const std::runtime_error& e) {
     throw SetupError(fmt::format("{}: body '{}': {}", spec.body.file(), body->name, e.what()));
+  }
+  // The rows this rank owns reference the ghosts: through the smoothed gradients and,
+  // for the stabilization and the physical displacement, the interpolation.
+  if (comm.parallel()) {
+    body->ghosts.build(comm, partition.offset,
+                       {{&body->gradient.row_offset, &body->gradient.col},
+                        {&body->interpolation.row_offset, &body->interpolation.col}});
+    body->constraints.distribute(comm, partition.offset);
+    // A frame's piece holds the elements whose lowest node this rank owns (each element
+    // written once over the ranks), with their other nodes as a halo.
+    std::vector<Index> halo;
+    const auto& mesh = cloud.mesh;
+    for (int e = 0; e < mesh.n_elements(); ++e) {
+      const std::int32_t* nodes = mesh.element_nodes(e);
+      const Index lowest = *std::min_element(nodes, nodes + mesh.element_size(e));
+      if (lowest >= body->owned_begin() && lowest < body->owned_end()) halo.insert(halo.end(), nodes, nodes + mesh.element_size(e));
+    }
+    body->output_halo.build(comm, partition.offset, std::move(halo));
   }
   return body;
 }
@@ -259,13 +298,14 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   return s;
 }
 
-std::unique_ptr<World> build_world(const scene::Scene& scene) {
+std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm) {
   auto world = std::make_unique<World>();
+  world->comm = &comm;
   const auto seed = static_cast<std::uint64_t>(scene.integrator.integer("seed"));
   int id = 0;
   for (const auto& spec : scene.bodies) {
     std::string warning;
-    world->bodies.push_back(build_body(spec, id++, seed, warning));
+    world->bodies.push_back(build_body(spec, id++, seed, comm, warning));
     if (!warning.empty()) world->setup_warnings.push_back(warning);
   }
   for (const auto& term : scene.terms) world->terms.push_back(terms::make_term(term, *world));

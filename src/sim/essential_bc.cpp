@@ -93,7 +93,20 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
   }
 }
 
+void EssentialBC::distribute(const par::Comm& comm, const std::vector<Index>& offset) {
+  std::vector<Index> constrained, rows;
+  for (const auto& ax : axes_) {
+    if (!ax) continue;
+    constrained.insert(constrained.end(), ax->particles.begin(), ax->particles.end());
+    rows.insert(rows.end(), ax->cf_col.begin(), ax->cf_col.end());
+  }
+  rows.insert(rows.end(), constrained.begin(), constrained.end());
+  constrained_.build(comm, offset, std::move(constrained));
+  rows_.build(comm, offset, std::move(rows));
+}
+
 double EssentialBC::transform_forces(std::vector<Vec3>& f) const {
+  if (constrained_.built()) constrained_.update(f);
   double support_power = 0.0;
   for (int a = 0; a < 3; ++a) {
     const Axis* ax = axes_[static_cast<std::size_t>(a)].get();
@@ -113,6 +126,10 @@ double EssentialBC::transform_forces(std::vector<Vec3>& f) const {
 }
 
 void EssentialBC::impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const {
+  if (rows_.built()) {
+    rows_.update(d);
+    rows_.update(v);
+  }
   for (int a = 0; a < 3; ++a) {
     const Axis* ax = axes_[static_cast<std::size_t>(a)].get();
     if (!ax) continue;

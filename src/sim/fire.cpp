@@ -6,17 +6,16 @@
 namespace rkpm::sim {
 
 FireStep Fire::update(World& world, double dt, double dt_max) {
-  // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body.
+  // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body (and rank).
   // Each body's sums start from zero and are added after the loop: an OpenMP reduction
   // onto a non-zero total combines the threads' parts in arrival order, which would
   // make a multi-body run depend on thread timing.
   double power = 0.0, vv = 0.0, ff = 0.0;
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
     double body_power = 0.0, body_vv = 0.0, body_ff = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : body_power, body_vv, body_ff)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       body_power += b.force[i].dot(b.v[i]);
       body_vv += b.v[i].squaredNorm();
       body_ff += b.force[i].squaredNorm();
@@ -25,6 +24,9 @@ FireStep Fire::update(World& world, double dt, double dt_max) {
     vv += body_vv;
     ff += body_ff;
   }
+  power = world.comm->sum(power);
+  vv = world.comm->sum(vv);
+  ff = world.comm->sum(ff);
   FireStep result;
   result.dt = dt;
   if (power > 0.0) {
@@ -34,9 +36,8 @@ FireStep Fire::update(World& world, double dt, double dt_max) {
     const double mix = ff > 0.0 ? alpha_ * std::sqrt(vv / ff) : 0.0;
     for (auto& bp : world.bodies) {
       Body& b = *bp;
-      const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static)
-      for (Index i = 0; i < n; ++i) b.v[i] = (1.0 - alpha_) * b.v[i] + mix * b.force[i];
+      for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = (1.0 - alpha_) * b.v[i] + mix * b.force[i];
       b.constraints.impose(b.d, b.v);
     }
     result.dissipated = kinetic_before - kinetic_energy(world);

@@ -34,7 +34,7 @@ Integrator::Integrator(World& world, IntegratorSettings settings) : world_(world
 double Integrator::bodies_wave_dt() const {
   double dt = std::numeric_limits<double>::infinity();
   for (const auto& b : world_.bodies) dt = std::min(dt, material_stable_dt(*b));
-  return dt;
+  return world_.comm->min(dt);
 }
 
 // The bodies' wave-speed step times the calibration (1 unless the step is measured),
@@ -78,9 +78,8 @@ void Integrator::forces_and_accelerations() {
 void Integrator::accelerations() {
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) b.a[i] = b.force[i] / b.inertia[i];
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.a[i] = b.force[i] / b.inertia[i];
   }
 }
 
@@ -92,7 +91,7 @@ double Integrator::power_of_terms() const {
 
 double Integrator::stored_energy() {
   ledger_.strain = 0.0;
-  for (const auto& b : world_.bodies) ledger_.strain += strain_energy(*b);
+  for (const auto& b : world_.bodies) ledger_.strain += world_.comm->sum(strain_energy(*b));
   ledger_.interface = 0.0;
   for (const auto& t : world_.terms) ledger_.interface += t->stored_energy(world_);
   return ledger_.strain + ledger_.interface;
@@ -110,10 +109,14 @@ void Integrator::initialize() {
     Body& b = *bp;
     b.constraints.impose(b.d, b.v);
     update_positions(b);
-    for (const auto& x : b.x) {
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
+      lo = lo.cwiseMin(b.x[i]);
+      hi = hi.cwiseMax(b.x[i]);
     }
+  }
+  for (int c = 0; c < 3; ++c) {
+    lo[c] = world_.comm->min(lo[c]);
+    hi[c] = world_.comm->max(hi[c]);
   }
   centre_ = 0.5 * (lo + hi);
   if (settings_.domain_size <= 0.0) settings_.domain_size = 50.0 * (hi - lo).norm();
@@ -203,10 +206,9 @@ void Integrator::first_kick_and_drift(StepBook& book) {
   double damping_power = 0.0;
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
     double body_power = 0.0;  // from zero, then added: see kinetic_energy (world.cpp)
 #pragma omp parallel for schedule(static) reduction(+ : body_power)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       b.v[i] += 0.5 * h * (b.a[i] - c * b.v[i]);
       body_power += c * b.inertia[i] * b.v[i].squaredNorm();
       b.d[i] += h * b.v[i];
@@ -215,7 +217,7 @@ void Integrator::first_kick_and_drift(StepBook& book) {
     b.constraints.advance(h, b.d, b.v);
     update_positions(b);
   }
-  book.damping_power = damping_power;
+  book.damping_power = world_.comm->sum(damping_power);
 }
 
 // Velocity Verlet, second half, damping implicit in it (unconditionally stable for any
@@ -225,10 +227,9 @@ void Integrator::second_kick(double h) {
   const double c = damping();
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
     const double factor = 1.0 / (1.0 + 0.5 * c * h);
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) b.v[i] = factor * (b.v[i] + 0.5 * h * b.a[i]);
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = factor * (b.v[i] + 0.5 * h * b.a[i]);
     b.constraints.impose(b.d, b.v);
   }
 }
@@ -305,16 +306,15 @@ double Integrator::motion_limited_dt() const {
   double dt = std::numeric_limits<double>::infinity();
   for (const auto& bp : world_.bodies) {
     const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static) reduction(min : dt)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       const double reach = kMotionFraction * b.spacing[i];
       const double v = b.v[i].norm(), a = b.a[i].norm();
       const double speed = v + std::sqrt(v * v + 2.0 * a * reach);
       if (speed > 0.0) dt = std::min(dt, 2.0 * reach / speed);
     }
   }
-  return dt;
+  return world_.comm->min(dt);
 }
 
 // Dynamic runs take the policy's step or the motion limit, the smaller; a testing run
@@ -335,12 +335,11 @@ void Integrator::update_convergence(double kinetic_of_motion) {
     const Body& b = *bp;
     const double mu = mean_shear_modulus(b);
     reference_energy += mu * body_volume(b);
-    const auto n = static_cast<Index>(b.size());
 #pragma omp parallel for schedule(static) reduction(max : residual)
-    for (Index i = 0; i < n; ++i)
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
       residual = std::max(residual, b.force[i].norm() / (mu * std::cbrt(b.cloud.volume[i] * b.cloud.volume[i])));
   }
-  residual_ = residual;
+  residual_ = world_.comm->max(residual);
   kinetic_measure_ = kinetic_of_motion / reference_energy;
 }
 
@@ -348,16 +347,18 @@ bool Integrator::converged() const {
   return residual_ < settings_.relax_force_tol && kinetic_measure_ < settings_.relax_velocity_tol;
 }
 
+// Every rank checks its own particles; the lowest rank that finds a failure states the
+// diagnosis and every rank throws it (one voice, the same exit on every rank).
 void Integrator::check_state() {
   enum Reason { None = 0, NonFinitePosition, NonFiniteVelocity, Inverted, Runaway };
   const double limit2 = settings_.domain_size * settings_.domain_size;
   double min_J = std::numeric_limits<double>::infinity();
+  std::string diagnosis;
   for (const auto& bp : world_.bodies) {
     const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
     Index first = std::numeric_limits<Index>::max();
 #pragma omp parallel for schedule(static) reduction(min : first, min_J)
-    for (Index i = 0; i < n; ++i) {
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       const double J = b.F[i].determinant();
       min_J = std::min(min_J, J);
       const bool bad = !b.x[i].allFinite() || !b.v[i].allFinite() || !(J > 0.0) ||
@@ -374,14 +375,20 @@ void Integrator::check_state() {
                           "the deformation gradient is inverted or degenerate (J <= 0 or NaN)",
                           "the particle left the domain (runaway motion)"};
     const Vec3 X = b.cloud.X[first];
-    throw BlowUp(fmt::format(
+    // The particle's id in a one-rank run of the scene, whatever the rank count.
+    const std::int64_t id = b.original_id.empty() ? first : b.original_id[static_cast<std::size_t>(first)];
+    diagnosis = fmt::format(
         "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
         "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "
         "The stable step estimate is {:.3g} s.",
-        world_.step, world_.time, dt(), b.name, first, X.x(), X.y(), X.z(), b.x[first].x(), b.x[first].y(),
-        b.x[first].z(), what[why], J, b.v[first].norm(), stable_dt_));
+        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), b.x[first].x(), b.x[first].y(),
+        b.x[first].z(), what[why], J, b.v[first].norm(), stable_dt_);
+    break;
   }
-  min_J_ = min_J;
+  const auto failed = world_.comm->gather(static_cast<std::int64_t>(diagnosis.empty() ? 0 : 1));
+  for (std::size_t r = 0; r < failed.size(); ++r)
+    if (failed[r] != 0) throw BlowUp(world_.comm->broadcast(diagnosis, static_cast<int>(r)));
+  min_J_ = world_.comm->min(min_J);
 }
 
 StateRecord Integrator::save_state() const {

@@ -1,10 +1,17 @@
 #include "rkpm/sim/output.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace rkpm::sim {
 
 namespace {
+
+// What a frame holds per point, in the order of the frame's fields: position (3),
+// displacement (3), velocity (3), body_id, volume, J, cauchy_stress (9), von_mises,
+// director (3).
+constexpr int kRecord = 25;
+constexpr int kFieldComponents[] = {3, 3, 1, 1, 1, 9, 1, 3};  // the fields after the position
 
 // Cauchy stress sigma = P F^T / J at one point, and its von Mises equivalent.
 void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) {
@@ -17,61 +24,110 @@ void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) 
   von_mises = std::sqrt(1.5 * dev.squaredNorm());
 }
 
+// The record of particle J of a body whose generalized displacements and velocities
+// (ghosts included) are d and v.
+void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std::vector<Vec3>& v, double* out) {
+  const Vec3 u = rk::interpolate(b.interpolation, d, J);  // physical displacement and velocity
+  const Vec3 w = rk::interpolate(b.interpolation, v, J);
+  const Vec3 p = b.cloud.X[J] + u;
+  const Vec3 h = b.director ? b.director->h[J] : Vec3::Zero();
+  std::copy_n(p.data(), 3, out);
+  std::copy_n(u.data(), 3, out + 3);
+  std::copy_n(w.data(), 3, out + 6);
+  out[9] = b.id;
+  out[10] = b.cloud.volume[J];
+  out[11] = b.F[J].determinant();
+  stress_at(b, static_cast<std::size_t>(J), out + 12, out[21]);
+  std::copy_n(h.data(), 3, out + 22);
+}
+
 }  // namespace
 
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions) {
-  const std::size_t total = world.particle_count();
   bool any_director = false;
-  for (const auto& b : world.bodies) any_director |= b->director.has_value();
+  std::size_t total = 0;
+  for (const auto& b : world.bodies) {
+    any_director |= b->director.has_value();
+    total += static_cast<std::size_t>(b->owned_end() - b->owned_begin()) + b->output_halo.ghost_count();
+  }
 
   io::Frame frame;
-  io::PointField displacement{"displacement", 3, {}}, velocity{"velocity", 3, {}}, body_id{"body_id", 1, {}},
-      volume{"volume", 1, {}}, J{"J", 1, {}}, stress{"cauchy_stress", 9, {}}, von_mises{"von_mises", 1, {}},
-      director{"director", 3, {}};
-  for (auto* f : {&displacement, &velocity, &body_id, &volume, &J, &stress, &von_mises, &director})
-    f->values.reserve(total * static_cast<std::size_t>(f->components));
+  std::vector<io::PointField> fields = {{"displacement", 3, {}}, {"velocity", 3, {}}, {"body_id", 1, {}},
+                                        {"volume", 1, {}},       {"J", 1, {}},        {"cauchy_stress", 9, {}},
+                                        {"von_mises", 1, {}},    {"director", 3, {}}};
+  const std::size_t n_fields = any_director ? fields.size() : fields.size() - 1;
+  for (std::size_t f = 0; f < n_fields; ++f) fields[f].values.reserve(total * static_cast<std::size_t>(fields[f].components));
   positions.clear();
   positions.reserve(total);
+  const auto append = [&](const double* record) {
+    positions.emplace_back(record[0], record[1], record[2]);
+    const double* value = record + 3;
+    for (std::size_t f = 0; f < n_fields; ++f) {
+      fields[f].values.insert(fields[f].values.end(), value, value + kFieldComponents[f]);
+      value += kFieldComponents[f];
+    }
+  };
 
-  std::vector<Vec3> u, w;
-  std::int64_t offset = 0;
+  std::vector<Vec3> ghosted_d, ghosted_v;
+  std::vector<double> records;
+  std::vector<std::int64_t> point_of;  // distributed: particle -> point of this frame, or -1
+  std::int64_t offset = 0;             // the body's first point in this frame
+  double record[kRecord];
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
-    physical_displacement(b, u);
-    // Physical velocity: the same interpolation applied to the generalized velocities.
-    w.resize(b.size());
-    const auto& N = b.interpolation;
-    for (std::size_t j = 0; j < b.size(); ++j) w[j] = rk::interpolate(N, b.v, static_cast<Index>(j));
-    for (std::size_t i = 0; i < b.size(); ++i) {
-      positions.push_back(b.cloud.X[i] + u[i]);
-      displacement.values.insert(displacement.values.end(), u[i].data(), u[i].data() + 3);
-      velocity.values.insert(velocity.values.end(), w[i].data(), w[i].data() + 3);
-      body_id.values.push_back(b.id);
-      volume.values.push_back(b.cloud.volume[i]);
-      J.values.push_back(b.F[i].determinant());
-      double s9[9], vm = 0.0;
-      stress_at(b, i, s9, vm);
-      stress.values.insert(stress.values.end(), s9, s9 + 9);
-      von_mises.values.push_back(vm);
-      const Vec3 h = b.director ? b.director->h[i] : Vec3::Zero();
-      if (any_director) director.values.insert(director.values.end(), h.data(), h.data() + 3);
+    const Index begin = b.owned_begin(), end = b.owned_end();
+    const auto& mesh = b.cloud.mesh;
+    if (!b.distributed()) {
+      for (Index J = 0; J < end; ++J) {
+        point_record(b, J, b.d, b.v, record);
+        append(record);
+      }
+      if (cells == CellOutput::Mesh)
+        for (int e = 0; e < mesh.n_elements(); ++e) {
+          frame.cells.types.push_back(static_cast<std::uint8_t>(mesh.type[e]));
+          for (int k = 0; k < mesh.element_size(e); ++k)
+            frame.cells.connectivity.push_back(offset + mesh.element_nodes(e)[k]);
+          frame.cells.offsets.push_back(static_cast<std::int64_t>(frame.cells.connectivity.size()));
+        }
+      offset += end;
+      continue;
     }
-    if (cells == CellOutput::Mesh) {
-      const auto& mesh = b.cloud.mesh;
+    // Distributed: this rank's piece holds its own particles, then the halo (the other
+    // nodes of the elements it writes: those whose lowest node it owns), whose records
+    // come from their owners.
+    ghosted_d = b.d;
+    ghosted_v = b.v;
+    b.ghosts.pull(ghosted_d);
+    b.ghosts.pull(ghosted_v);
+    records.assign(b.size() * kRecord, 0.0);
+    for (Index J = begin; J < end; ++J) point_record(b, J, ghosted_d, ghosted_v, records.data() + kRecord * J);
+    b.output_halo.pull(records.data(), kRecord);
+    point_of.assign(b.size(), -1);
+    std::int64_t next = offset;
+    for (Index J = begin; J < end; ++J) {
+      append(records.data() + kRecord * J);
+      point_of[static_cast<std::size_t>(J)] = next++;
+    }
+    for (const auto& group : b.output_halo.ghosts_by_owner())
+      for (Index J : group) {
+        append(records.data() + kRecord * J);
+        point_of[static_cast<std::size_t>(J)] = next++;
+      }
+    if (cells == CellOutput::Mesh)
       for (int e = 0; e < mesh.n_elements(); ++e) {
+        const std::int32_t* nodes = mesh.element_nodes(e);
+        const Index lowest = *std::min_element(nodes, nodes + mesh.element_size(e));
+        if (lowest < begin || lowest >= end) continue;
         frame.cells.types.push_back(static_cast<std::uint8_t>(mesh.type[e]));
-        for (int k = 0; k < mesh.element_size(e); ++k)
-          frame.cells.connectivity.push_back(offset + mesh.element_nodes(e)[k]);
+        for (int k = 0; k < mesh.element_size(e); ++k) frame.cells.connectivity.push_back(point_of[nodes[k]]);
         frame.cells.offsets.push_back(static_cast<std::int64_t>(frame.cells.connectivity.size()));
       }
-    }
-    offset += static_cast<std::int64_t>(b.size());
+    offset = next;
   }
-  if (cells == CellOutput::Points) frame.cells = io::vertex_cells(total);
+  if (cells == CellOutput::Points) frame.cells = io::vertex_cells(positions.size());
   frame.points = &positions;
-  frame.point_fields = {std::move(displacement), std::move(velocity), std::move(body_id), std::move(volume),
-                        std::move(J), std::move(stress), std::move(von_mises)};
-  if (any_director) frame.point_fields.push_back(std::move(director));
+  fields.resize(n_fields);
+  frame.point_fields = std::move(fields);
   return frame;
 }
 

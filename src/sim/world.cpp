@@ -12,16 +12,15 @@ double kinetic_energy(const World& world) {
   double ke = 0.0;
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
-    const auto n = static_cast<Index>(b.size());
     // Each body's sum starts from zero: an OpenMP reduction onto a non-zero total
     // combines the threads' parts in arrival order, so a multi-body run would depend
     // on thread timing. (Two threads' parts added to zero commute exactly.)
     double body_ke = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : body_ke)
-    for (Index i = 0; i < n; ++i) body_ke += 0.5 * b.inertia[i] * b.v[i].squaredNorm();
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) body_ke += 0.5 * b.inertia[i] * b.v[i].squaredNorm();
     ke += body_ke;
   }
-  return ke;
+  return world.comm->sum(ke);
 }
 
 }  // namespace rkpm::sim

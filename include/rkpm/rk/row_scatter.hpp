@@ -31,7 +31,13 @@ class RowScatter {
     const std::vector<Index>* row_offset;
     const std::vector<Index>* col;
   };
-  void plan(Index n_rows, Index n_columns, const std::vector<Pattern>& patterns, int threads, int channels);
+  void plan(Index n_rows, Index n_columns, const std::vector<Pattern>& patterns, int threads, int channels) {
+    plan(0, n_rows, n_columns, patterns, threads, channels);
+  }
+  // The same over rows [first_row, end_row) only: a rank of a distributed run
+  // evaluates the rows it owns.
+  void plan(Index first_row, Index end_row, Index n_columns, const std::vector<Pattern>& patterns, int threads,
+            int channels);
 
   bool planned_for(int threads) const { return threads_ == threads; }
   int threads() const { return threads_; }

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
+#include "rkpm/par/ghost_exchange.hpp"
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
 #include "rkpm/rk/row_scatter.hpp"
@@ -81,6 +82,17 @@ struct Body {
   std::optional<DirectorField> director;
   EssentialBC constraints;
 
+  // Distributed runs (par/partition.hpp): this rank owns particles and rows
+  // [owned_begin(), owned_end()); the arrays above keep every particle's slot, and those
+  // outside the range hold current values only for the ghosts (par/ghost_exchange.hpp),
+  // which the force pass pulls from their owners. One rank owns everything.
+  par::GhostExchange ghosts;               // built only when the run has more than one rank
+  par::GhostExchange output_halo;          // distributed: the nodes of this rank's output cells it does not own
+  std::vector<std::int64_t> original_id;   // distributed: each particle's id in a one-rank run
+  bool distributed() const { return ghosts.built(); }
+  Index owned_begin() const { return distributed() ? ghosts.begin() : 0; }
+  Index owned_end() const { return distributed() ? ghosts.end() : static_cast<Index>(size()); }
+
   Body() = default;
   Body(const Body&) = delete;
   Body& operator=(const Body&) = delete;
@@ -93,9 +105,13 @@ void update_positions(Body& body);
 
 // F at every integration point, the director gradient where the Frank term needs it,
 // the first Piola-Kirchhoff stress, and body.force = -f_int (the internal force).
+// Distributed: at the points this rank owns, after pulling the ghosts' displacements
+// (and directors) and before returning the ghosts' force contributions to their owners;
+// body.force is then complete at the owned particles.
 void compute_internal_forces(Body& body);
 
 // Stored (passive) energy sum_L V_L W(F_L) [J]; active stress is not stored energy.
+// Distributed: this rank's share (its owned points); the caller sums over the ranks.
 double strain_energy(const Body& body);
 
 // Physical displacement u(X_J) = sum_I Psi_I(X_J) d_I at every particle.
@@ -134,6 +150,7 @@ double mean_shear_modulus(const Body& body);
 
 // Largest stable time step of the body's material: min_I spacing_I / c_I sqrt(inertia_I / mass_I)
 // (the particle's own wave step, lengthened by its mass scaling).
+// Distributed: over this rank's particles.
 double material_stable_dt(const Body& body);
 
 // Each particle's own wave step spacing_I / c_I at the current state, without mass scaling [s].

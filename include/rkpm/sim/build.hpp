@@ -2,6 +2,7 @@
 // fields, boundary conditions and exactly the terms the scene declares.
 #pragma once
 
+#include "rkpm/par/comm.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/integrator.hpp"
 #include "rkpm/sim/world.hpp"
@@ -18,7 +19,9 @@ struct SetupError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::unique_ptr<World> build_world(const scene::Scene& scene);
+// On more than one rank of `comm`, each body is partitioned (par/partition.hpp) and
+// renumbered so that this rank owns one range of it, and its ghost layer is built.
+std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm = par::Comm::world());
 
 // The particle cloud of one body, as build_world makes it (generator or imported mesh).
 // Throws particles::CloudError for a mesh the importer rejects.

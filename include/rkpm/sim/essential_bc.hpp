@@ -15,6 +15,7 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
+#include "rkpm/par/shared_particles.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
 
 #include <array>
@@ -55,6 +56,12 @@ class EssentialBC {
   // Re-imposes the constraints without advancing time (after set-up or restart).
   void impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const;
 
+  // Distributed runs: the constrained rows couple particles of several ranks, and the
+  // small system Lambda_CC is solved redundantly on every rank. Before each solve the
+  // values it reads (d and v at the constrained particles and their rows' columns, f at
+  // the constrained particles) are gathered from their owners (par/shared_particles.hpp).
+  void distribute(const par::Comm& comm, const std::vector<Index>& offset);
+
   // Particle/axis pairs that are constrained, for masks in the integrator.
   bool constrained(Index particle, int axis) const;
 
@@ -67,6 +74,8 @@ class EssentialBC {
   std::array<std::unique_ptr<Axis>, 3> axes_;
   std::vector<std::array<char, 3>> mask_;
   std::size_t components_ = 0;
+  par::SharedParticles rows_;         // distributed: the constrained particles and their rows' columns
+  par::SharedParticles constrained_;  // distributed: the constrained particles
 };
 
 }  // namespace rkpm::sim

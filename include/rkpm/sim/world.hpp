@@ -33,6 +33,10 @@ class Term {
   virtual double power(const World&) const { return 0.0; }
   // Largest stable time step this term allows (stiff contact, etc.).
   virtual double stable_dt(const World&) const { return std::numeric_limits<double>::infinity(); }
+  // The term runs on more than one rank (its forces at the owned particles, its energy,
+  // power and limits reduced over the ranks). A scene with a term that does not is
+  // refused on more than one rank with a message naming it.
+  virtual bool distributed() const { return false; }
   // Adds the term's own metrics to the run summary.
   virtual void report(const World&, io::Json&) const {}
   // Columns the term adds to history.csv: their names, and their values at the present
@@ -46,6 +50,8 @@ class Term {
 };
 
 struct World {
+  // The ranks the bodies are distributed over (one rank: the whole world here).
+  const par::Comm* comm = &par::Comm::self();
   std::vector<std::unique_ptr<Body>> bodies;
   std::vector<std::unique_ptr<Term>> terms;
   double time = 0.0;
@@ -69,7 +75,9 @@ struct World {
 // Internal forces of every body, then every term's forces.
 void compute_forces(World& world);
 
-// Kinetic energy sum_I m_I |v_I|^2 / 2 of every body [J].
+// Kinetic energy sum_I m_I |v_I|^2 / 2 of every body [J], summed over the ranks.
+// Convention: a function of the World (and every Term method) returns the value of the
+// whole run on every rank; a function of one Body returns this rank's share.
 double kinetic_energy(const World& world);
 
 }  // namespace rkpm::sim

@@ -7,17 +7,15 @@
 namespace rkpm::sim {
 
 void BodyForce::add_forces(World&) {
-  const auto n = static_cast<Index>(body_.size());
 #pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) body_.force[i] += body_.mass[i] * g_;
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) body_.force[i] += body_.mass[i] * g_;
 }
 
-double BodyForce::power(const World&) const {
+double BodyForce::power(const World& world) const {
   double p = 0.0;
-  const auto n = static_cast<Index>(body_.size());
 #pragma omp parallel for schedule(static) reduction(+ : p)
-  for (Index i = 0; i < n; ++i) p += body_.mass[i] * g_.dot(body_.v[i]);
-  return p;
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) p += body_.mass[i] * g_.dot(body_.v[i]);
+  return world.comm->sum(p);
 }
 
 }  // namespace rkpm::sim

@@ -11,6 +11,7 @@ class BodyForce final : public Term {
   std::string name() const override { return "body_force"; }
   void add_forces(World&) override;
   double power(const World&) const override;
+  bool distributed() const override { return true; }
 
  private:
   Body& body_;

@@ -1,0 +1,30 @@
+// A small set of particles whose values every rank keeps current: each update gathers
+// the owners' values to every rank. For couplings that are solved redundantly on every
+// rank rather than split (the essential boundary conditions' constrained particles and
+// the columns of their rows: a surface subset, solved by one small sparse LU).
+#pragma once
+
+#include "rkpm/common/types.hpp"
+#include "rkpm/par/comm.hpp"
+
+#include <vector>
+
+namespace rkpm::par {
+
+class SharedParticles {
+ public:
+  // `offset` (ranks + 1 entries) gives each rank's range of particles; `ids` the set.
+  void build(const Comm& comm, const std::vector<Index>& offset, std::vector<Index> ids);
+  bool built() const { return comm_ != nullptr; }
+  // field[i] = its owner's field[i], for every i of the set, on every rank.
+  void update(std::vector<Vec3>& field) const;
+  std::size_t size() const { return ids_.size(); }
+
+ private:
+  const Comm* comm_ = nullptr;
+  std::vector<Index> ids_;   // sorted: the ranks' owned subsets follow one another in rank order
+  std::vector<Index> mine_;  // the ids this rank owns, sorted
+  mutable std::vector<double> buffer_;
+};
+
+}  // namespace rkpm::par

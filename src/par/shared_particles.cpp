@@ -1,0 +1,32 @@
+#include "rkpm/par/shared_particles.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rkpm::par {
+
+void SharedParticles::build(const Comm& comm, const std::vector<Index>& offset, std::vector<Index> ids) {
+  comm_ = &comm;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  ids_ = std::move(ids);
+  const Index begin = offset[static_cast<std::size_t>(comm.rank())];
+  const Index end = offset[static_cast<std::size_t>(comm.rank()) + 1];
+  mine_.clear();
+  for (Index i : ids_)
+    if (i >= begin && i < end) mine_.push_back(i);
+}
+
+void SharedParticles::update(std::vector<Vec3>& field) const {
+  if (!comm_->parallel()) return;
+  buffer_.resize(3 * mine_.size());
+  for (std::size_t k = 0; k < mine_.size(); ++k)
+    for (int c = 0; c < 3; ++c) buffer_[3 * k + static_cast<std::size_t>(c)] = field[static_cast<std::size_t>(mine_[k])][c];
+  const std::vector<double> all = comm_->gather(buffer_);
+  if (all.size() != 3 * ids_.size())
+    throw std::logic_error("shared particles: the ranks' owned subsets do not add up to the set");
+  for (std::size_t k = 0; k < ids_.size(); ++k)
+    field[static_cast<std::size_t>(ids_[k])] = Vec3(all[3 * k], all[3 * k + 1], all[3 * k + 2]);
+}
+
+}  // namespace rkpm::par

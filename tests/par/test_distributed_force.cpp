@@ -1,0 +1,204 @@
+// Run under mpirun with 2 ranks (tests/par/CMakeLists.txt). Each body is partitioned
+// over the ranks and renumbered; the ghost layer pulls the owners' values and returns
+// the force contributions, and the internal force at every owned particle equals a
+// one-rank run of the same scene, built in the same process on Comm::self().
+#include "rkpm/common/split_mix64.hpp"
+#include "rkpm/par/comm.hpp"
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/build.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using namespace rkpm;
+using namespace rkpm::sim;
+
+namespace {
+
+const char* kLceSphere = R"(
+[scene]
+name = "distributed_force"
+[integrator]
+mode = "dynamic"
+t_end = 1e-6
+[[body]]
+name = "ball"
+density = 1000.0
+[body.cloud]
+generator = "sphere"
+radius = 2e-6
+cells = 6
+[body.rk]
+gradient_precision = "double"
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+s = 2.0
+kappa = 1e-11
+zeta = -3e3
+[body.director]
+initial = "radial"
+boundary = "free"
+)";
+
+const char* kMooneyRivlinBlock = R"(
+[scene]
+name = "distributed_force"
+[integrator]
+mode = "dynamic"
+t_end = 1e-6
+[[body]]
+name = "block"
+density = 1000.0
+[body.cloud]
+generator = "block"
+size = [4e-6, 3e-6, 2e-6]
+cells = [8, 6, 5]
+jitter = 0.2
+[body.material]
+model = "mooney_rivlin"
+c1 = 2.126e3
+c2 = 1.7e2
+lambda = 1.7e5
+)";
+
+std::int64_t original(const Body& b, std::size_t i) {
+  return b.original_id.empty() ? static_cast<std::int64_t>(i) : b.original_id[i];
+}
+
+// A unit-box random vector that depends only on the particle's one-rank id.
+Vec3 noise(std::int64_t id, std::uint64_t salt) {
+  SplitMix64 r(static_cast<std::uint64_t>(id) * 0x9e3779b97f4a7c15ULL + salt);
+  return Vec3(r.symmetric_unit(), r.symmetric_unit(), r.symmetric_unit());
+}
+
+// A smooth finite deformation and a rough part the stabilization resists, and a
+// perturbed director: the same physical state in either numbering.
+void deform(Body& b) {
+  Mat3 A;
+  A << 0.08, 0.03, -0.02, 0.01, -0.05, 0.04, 0.02, 0.0, 0.06;
+  double volume = 0.0;  // the mean spacing: the same in either numbering
+  for (double v : b.cloud.volume) volume += v;
+  const double h = std::cbrt(volume / static_cast<double>(b.size()));
+  for (std::size_t i = 0; i < b.size(); ++i) b.d[i] = A * b.cloud.X[i] + 0.05 * h * noise(original(b, i), 1);
+  update_positions(b);
+  if (b.director)
+    for (std::size_t i = 0; i < b.size(); ++i)
+      b.director->h[i] = (b.director->h[i] + 0.2 * noise(original(b, i), 2)).normalized();
+}
+
+// Poisons every slot this rank does not own, so a missing ghost shows up as NaN.
+void poison_unowned(Body& b) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
+    if (i < b.owned_begin() || i >= b.owned_end()) {
+      b.d[i] = b.x[i] = Vec3::Constant(nan);
+      if (b.director) b.director->h[i] = Vec3::Constant(nan);
+    }
+}
+
+void check_distributed_force(const std::string& text) {
+  const par::Comm& comm = par::Comm::world();
+  ASSERT_EQ(comm.size(), 2) << "run this test with mpirun -np 2";
+  const auto scene = scene::parse_scene(text, "distributed.toml");
+  auto serial = build_world(scene, par::Comm::self());
+  auto distributed = build_world(scene, comm);
+  Body& s = *serial->bodies.front();
+  Body& d = *distributed->bodies.front();
+  ASSERT_TRUE(d.distributed());
+  ASSERT_FALSE(s.distributed());
+  ASSERT_EQ(d.size(), s.size());
+  // Both ranks own a part, and the parts tile the body.
+  const auto owned = comm.sum(static_cast<std::int64_t>(d.owned_end() - d.owned_begin()));
+  EXPECT_EQ(owned, static_cast<std::int64_t>(d.size()));
+  EXPECT_GT(d.owned_end(), d.owned_begin());
+  EXPECT_GT(d.ghosts.ghost_count(), 0u);
+
+  deform(s);
+  deform(d);
+  poison_unowned(d);
+  compute_internal_forces(s);
+  compute_internal_forces(d);
+
+  double scale = 0.0, error = 0.0, div_scale = 0.0, div_error = 0.0;
+  for (Index i = d.owned_begin(); i < d.owned_end(); ++i) {
+    const auto j = static_cast<std::size_t>(original(d, static_cast<std::size_t>(i)));
+    // The same particle: the reference positions moved with the renumbering.
+    ASSERT_EQ((d.cloud.X[i] - s.cloud.X[j]).norm(), 0.0);
+    scale = std::max(scale, s.force[j].norm());
+    error = std::max(error, (d.force[i] - s.force[j]).norm());
+    if (d.director && d.director->frank) {
+      div_scale = std::max(div_scale, s.director->frank_divergence[j].norm());
+      div_error = std::max(div_error, (d.director->frank_divergence[i] - s.director->frank_divergence[j]).norm());
+    }
+  }
+  scale = comm.max(scale);
+  error = comm.max(error);
+  if (comm.root())
+    std::cout << "distributed against one rank: largest force difference " << error / scale << " of the largest force, "
+              << d.ghosts.ghost_count() << " ghosts on rank 0 of " << d.size() << " particles\n";
+  ASSERT_GT(scale, 0.0);
+  EXPECT_LT(error, 1e-12 * scale);
+  if (d.director && d.director->frank) {
+    div_scale = comm.max(div_scale);
+    div_error = comm.max(div_error);
+    ASSERT_GT(div_scale, 0.0);
+    EXPECT_LT(div_error, 1e-12 * div_scale);
+  }
+  // The stabilization energy: each rank's share of the rows.
+  const double stab = comm.sum(d.stabilization_energy);
+  EXPECT_GT(s.stabilization_energy, 0.0);
+  EXPECT_NEAR(stab, s.stabilization_energy, 1e-12 * s.stabilization_energy);
+}
+
+}  // namespace
+
+TEST(DistributedForce, LceBallWithFrankTermMatchesOneRank) {
+  omp_set_num_threads(1);
+  check_distributed_force(kLceSphere);
+}
+
+TEST(DistributedForce, JitteredMooneyRivlinBlockMatchesOneRank) {
+  omp_set_num_threads(2);  // threads within a rank too
+  check_distributed_force(kMooneyRivlinBlock);
+}
+
+// Pull copies the owner's value to every ghost; push adds each ghost's value to its owner once.
+TEST(GhostExchange, PullCopiesOwnersValuesAndPushAddsEachGhostToItsOwnerOnce) {
+  const par::Comm& comm = par::Comm::world();
+  const auto world = build_world(scene::parse_scene(kMooneyRivlinBlock, "distributed.toml"), comm);
+  const Body& b = *world->bodies.front();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Vec3> field(b.size(), Vec3::Constant(nan));
+  for (Index i = b.owned_begin(); i < b.owned_end(); ++i) field[i] = noise(original(b, static_cast<std::size_t>(i)), 3);
+  b.ghosts.pull(field);
+  std::size_t checked = 0;
+  for (const auto& group : b.ghosts.ghosts_by_owner())
+    for (Index g : group) {
+      EXPECT_EQ(field[g], noise(original(b, static_cast<std::size_t>(g)), 3)) << "ghost " << g;
+      ++checked;
+    }
+  EXPECT_EQ(checked, b.ghosts.ghost_count());
+
+  std::vector<Vec3> ones(b.size(), Vec3::Zero());
+  for (Index i = b.owned_begin(); i < b.owned_end(); ++i) ones[i] = Vec3::Ones();
+  for (const auto& group : b.ghosts.ghosts_by_owner())
+    for (Index g : group) ones[g] = Vec3::Ones();
+  b.ghosts.push_add(ones);
+  double extra = 0.0;
+  for (Index i = b.owned_begin(); i < b.owned_end(); ++i) extra += ones[i].x() - 1.0;
+  // Every ghost on any rank came back to its owner exactly once.
+  EXPECT_EQ(comm.sum(extra), static_cast<double>(comm.sum(static_cast<std::int64_t>(b.ghosts.ghost_count()))));
+  EXPECT_EQ(static_cast<std::size_t>(extra), b.ghosts.send_count());
+}
+
+int main(int argc, char** argv) {
+  rkpm::par::Session mpi(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
