@@ -86,7 +86,8 @@ int main(int argc, char** argv) {
   try {
     scene = rkpm::scene::load_scene(scene_path);
   } catch (const rkpm::scene::SceneError& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    // Every rank reads the same file and finds the same error: rank 0 reports it.
+    if (rkpm::par::Comm::world().root()) std::cerr << "error: " << e.what() << "\n";
     return rkpm::sim::kBadInput;
   }
   if (threads > 0) omp_set_num_threads(threads);
@@ -121,7 +122,11 @@ int main(int argc, char** argv) {
   try {
     return rkpm::sim::run_scene(scene, options, std::cerr);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    // Found on this rank alone: the others may wait for it in a collective, so a
+    // distributed run ends every rank at once.
+    const auto& comm = rkpm::par::Comm::world();
+    std::cerr << "error" << (comm.parallel() ? " (rank " + std::to_string(comm.rank()) + ")" : "") << ": " << e.what() << "\n";
+    if (comm.parallel()) comm.abort(rkpm::sim::kInternalError);
     return rkpm::sim::kInternalError;
   }
 }

@@ -38,11 +38,37 @@ std::string frame_file_name(const std::string& basename, int index) {
   return fmt::format("{}_{:0{}d}.vtu", basename, index, kIndexDigits);
 }
 
-// The frame number encoded in `<basename>_<digits>.vtu`, or -1 if `file` is not
-// one of this series' frame names.
+std::string piece_file_name(const std::string& basename, int index, int rank) {
+  return fmt::format("{}_{:0{}d}_{}.vtu", basename, index, kIndexDigits, rank);
+}
+
+std::string parallel_file_name(const std::string& basename, int index) {
+  return fmt::format("{}_{:0{}d}.pvtu", basename, index, kIndexDigits);
+}
+
+// The .pvtu of one frame: the pieces' array layout (taken from this rank's piece; every
+// piece has the same arrays) and their file names.
+std::string pvtu_text(const Frame& piece, const std::string& basename, int index, int ranks) {
+  std::string text =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
+  for (const PointField& f : piece.point_fields)
+    text += fmt::format("      <PDataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n", f.name,
+                        f.components);
+  text += "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
+          "    </PPoints>\n";
+  for (int r = 0; r < ranks; ++r) text += fmt::format("    <Piece Source=\"{}\"/>\n", piece_file_name(basename, index, r));
+  text += "  </PUnstructuredGrid>\n</VTKFile>\n";
+  return text;
+}
+
+// The frame number encoded in `<basename>_<digits>.vtu` (or `.pvtu`, a distributed
+// run's frame), or -1 if `file` is not one of this series' frame names.
 int frame_index_of(const std::string& basename, const std::string& file) {
   const std::string prefix = basename + "_";
-  const std::string suffix = ".vtu";
+  const bool parallel = file.size() > 5 && file.compare(file.size() - 5, 5, ".pvtu") == 0;
+  const std::string suffix = parallel ? ".pvtu" : ".vtu";
   if (file.size() <= prefix.size() + suffix.size() || file.compare(0, prefix.size(), prefix) != 0 ||
       file.compare(file.size() - suffix.size(), suffix.size(), suffix) != 0) {
     return -1;
@@ -119,18 +145,22 @@ std::vector<PvdEntry> read_pvd(const fs::path& pvd) {
   return entries;
 }
 
-PvdSeries::PvdSeries(fs::path dir, std::string basename)
-    : PvdSeries(std::move(dir), std::move(basename), {}, 0) {
+PvdSeries::PvdSeries(fs::path dir, std::string basename, bool owner)
+    : PvdSeries(std::move(dir), std::move(basename), {}, 0, owner) {
   rewrite_pvd();
 }
 
-PvdSeries::PvdSeries(fs::path dir, std::string basename, std::vector<PvdEntry> entries, int next_index)
-    : dir_(std::move(dir)), basename_(std::move(basename)), entries_(std::move(entries)), next_index_(next_index) {
+PvdSeries::PvdSeries(fs::path dir, std::string basename, std::vector<PvdEntry> entries, int next_index, bool owner)
+    : dir_(std::move(dir)),
+      basename_(std::move(basename)),
+      entries_(std::move(entries)),
+      next_index_(next_index),
+      owner_(owner) {
   check_basename(basename_);
   fs::create_directories(dir_);
 }
 
-PvdSeries PvdSeries::resume(const fs::path& dir, const std::string& basename, double up_to_time) {
+PvdSeries PvdSeries::resume(const fs::path& dir, const std::string& basename, double up_to_time, bool owner) {
   check_basename(basename);
   const fs::path pvd = dir / (basename + ".pvd");
   if (!fs::exists(pvd)) {
@@ -156,11 +186,12 @@ PvdSeries PvdSeries::resume(const fs::path& dir, const std::string& basename, do
       abandoned.push_back(dir / e.file);
     }
   }
-  PvdSeries series(dir, basename, std::move(kept), next_index);
+  PvdSeries series(dir, basename, std::move(kept), next_index, owner);
   // List only the kept frames first, then delete the abandoned ones: the .pvd
   // never names a file that is gone.
   series.rewrite_pvd();
-  for (const fs::path& file : abandoned) fs::remove(file);
+  if (owner)
+    for (const fs::path& file : abandoned) fs::remove(file);
   return series;
 }
 
@@ -191,6 +222,36 @@ fs::path PvdSeries::write(double time, const Frame& frame) {
   return path;
 }
 
-void PvdSeries::rewrite_pvd() const { write_text_atomically(pvd_path(), pvd_text(entries_)); }
+fs::path PvdSeries::write_piece(double time, const Frame& piece, int rank) const {
+  if (!std::isfinite(time)) throw NonFiniteValue(fmt::format("output frame time is {}", time));
+  if (!entries_.empty() && !(time > entries_.back().time)) {
+    throw FrameError(fmt::format("output frame time {} is not after the previous frame's time {}", time,
+                                 entries_.back().time));
+  }
+  validate_frame(piece);  // before any file is touched
+  const fs::path path = dir_ / piece_file_name(basename_, next_index_, rank);
+  replace_atomically(path, [&](const fs::path& tmp) { write_vtu(tmp, piece); });
+  return path;
+}
+
+fs::path PvdSeries::add_parallel_frame(double time, const Frame& piece, int ranks) {
+  const fs::path path = dir_ / parallel_file_name(basename_, next_index_);
+  entries_.push_back({time, path.filename().string()});
+  if (owner_) {
+    try {
+      write_text_atomically(path, pvtu_text(piece, basename_, next_index_, ranks));
+      rewrite_pvd();
+    } catch (...) {
+      entries_.pop_back();
+      throw;
+    }
+  }
+  ++next_index_;
+  return path;
+}
+
+void PvdSeries::rewrite_pvd() const {
+  if (owner_) write_text_atomically(pvd_path(), pvd_text(entries_));
+}
 
 }  // namespace rkpm::io

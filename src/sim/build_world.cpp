@@ -298,7 +298,33 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   return s;
 }
 
+namespace {
+// What this version runs on more than one rank: every material's internal force and
+// FIRE or explicit dynamics, essential boundary conditions, and the terms that say so
+// (Term::distributed). Anything else is refused before a particle is built, naming
+// the scene's line, so that no rank count silently changes the physics.
+void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
+  const auto refuse = [&](const scene::ParamSet& p, int line, const std::string& what) {
+    throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the "
+                                 "scene as one process (without mpirun). Distributed: every material's internal "
+                                 "force, essential boundary conditions, body_force, FIRE and explicit dynamics",
+                                 p.file(), line, what, comm.size()));
+  };
+  const auto& in = scene.integrator;
+  if (!in.reals("nested_levels").empty()) refuse(in, in.line("nested_levels"), "[integrator] nested_levels");
+  if (in.flag("mass_scaling")) refuse(in, in.line("mass_scaling"), "[integrator] mass_scaling");
+  if (in.choice("stable_step") == "measured") refuse(in, in.line("stable_step"), "[integrator] stable_step = \"measured\"");
+  if (!scene.output.text("shape_report").empty())
+    refuse(scene.output, scene.output.line("shape_report"), "[output] shape_report");
+  for (const auto& body : scene.bodies)
+    if (body.director)
+      refuse(*body.director, body.director->table_line(),
+             fmt::format("body '{}': the director field (Eq. 5-8) of an LCE body", body.name()));
+}
+}  // namespace
+
 std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm) {
+  if (comm.parallel()) check_distributable(scene, comm);
   auto world = std::make_unique<World>();
   world->comm = &comm;
   const auto seed = static_cast<std::uint64_t>(scene.integrator.integer("seed"));
@@ -308,7 +334,14 @@ std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& c
     world->bodies.push_back(build_body(spec, id++, seed, comm, warning));
     if (!warning.empty()) world->setup_warnings.push_back(warning);
   }
-  for (const auto& term : scene.terms) world->terms.push_back(terms::make_term(term, *world));
+  for (const auto& term : scene.terms) {
+    world->terms.push_back(terms::make_term(term, *world));
+    if (comm.parallel() && !world->terms.back()->distributed())
+      throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
+                                   "has {}); run the scene as one process (without mpirun). Distributed terms: "
+                                   "body_force",
+                                   term.params.file(), term.params.table_line(), term.type(), comm.size()));
+  }
   return world;
 }
 

@@ -19,7 +19,8 @@ namespace {
 //   u64 FNV-1a digest of every byte before it.
 constexpr char kMagic[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', 'T'};
 constexpr char kMagicFormat1[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', '1'};  // positional fields, no version
-constexpr std::uint32_t kFormatVersion = 4;  // 3: the inertia (mass scaling) per body; 4: the stable step's calibration
+constexpr std::uint32_t kFormatVersion = 5;  // 3: the inertia (mass scaling) per body; 4: the stable step's
+                                             // calibration; 5: the rank and rank count
 
 std::uint64_t fnv1a(const char* data, std::size_t n) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -165,6 +166,9 @@ StateRecord checkpoint_record(const World& world, const Integrator& integrator, 
   r.put_integer("scene_digest", static_cast<std::int64_t>(scene_digest));
   r.put_real("time", world.time);
   r.put_integer("step", world.step);
+  // A distributed run writes one checkpoint per rank, each holding its rank's state.
+  r.put_integer("rank", world.comm->rank());
+  r.put_integer("ranks", world.comm->size());
   r.put_real("clock.next_output", clock.next_output);
   r.put_integer("clock.frames", clock.frames);
   r.put_record("integrator.", integrator.save_state());
@@ -222,6 +226,10 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       fail(fmt::format("written for another scene (scene digest {:016x}, this scene file's is {:016x}: the file "
                        "changed or is another scene)",
                        digest, scene_digest));
+    if (r.integer("ranks") != world.comm->size() || r.integer("rank") != world.comm->rank())
+      fail(fmt::format("written by rank {} of a run on {} rank(s); this is rank {} of {}: resume on the rank "
+                       "count that wrote it",
+                       r.integer("rank"), r.integer("ranks"), world.comm->rank(), world.comm->size()));
     if (r.text("bodies") != body_names(world))
       fail(fmt::format("the bodies differ: the checkpoint has {}, the scene has {}", listed(r.text("bodies")),
                        listed(body_names(world))));

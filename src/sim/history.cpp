@@ -41,7 +41,8 @@ void keep_rows_up_to(const std::filesystem::path& path, std::int64_t step) {
 }  // namespace
 
 History::History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume)
-    : path_(path), shape_body_(shape_body) {
+    : writes_(world.comm->root()), path_(path), shape_body_(shape_body) {
+  if (!writes_) return;
   if (resume) keep_rows_up_to(path, world.step);
   out_.open(path, resume ? std::ios::app : std::ios::trunc);
   if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
@@ -56,10 +57,13 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
 
 void History::record(const World& world, Integrator& integrator) {
   const auto& e = integrator.measure_energy();
+  std::string term_values;  // on every rank: a distributed term's values are collective
+  for (const auto& t : world.terms) term_values += t->history_values(world);
+  if (!writes_) return;
   out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
                       world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
                       e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
-  for (const auto& t : world.terms) out_ << t->history_values(world);
+  out_ << term_values;
   if (shape_body_) {
     // The whole shape report is a pass over the surface particles: cheap next to a step.
     // Fields that cannot be measured in this state stay empty.

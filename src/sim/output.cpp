@@ -8,10 +8,10 @@ namespace rkpm::sim {
 namespace {
 
 // What a frame holds per point, in the order of the frame's fields: position (3),
-// displacement (3), velocity (3), body_id, volume, J, cauchy_stress (9), von_mises,
-// director (3).
-constexpr int kRecord = 25;
-constexpr int kFieldComponents[] = {3, 3, 1, 1, 1, 9, 1, 3};  // the fields after the position
+// displacement (3), velocity (3), body_id, particle_id, volume, J, cauchy_stress (9),
+// von_mises, director (3).
+constexpr int kRecord = 26;
+constexpr int kFieldComponents[] = {3, 3, 1, 1, 1, 1, 9, 1, 3};  // the fields after the position
 
 // Cauchy stress sigma = P F^T / J at one point, and its von Mises equivalent.
 void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) {
@@ -35,10 +35,13 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   std::copy_n(u.data(), 3, out + 3);
   std::copy_n(w.data(), 3, out + 6);
   out[9] = b.id;
-  out[10] = b.cloud.volume[J];
-  out[11] = b.F[J].determinant();
-  stress_at(b, static_cast<std::size_t>(J), out + 12, out[21]);
-  std::copy_n(h.data(), 3, out + 22);
+  // The particle's number in a one-rank run, whatever the rank count: what a user
+  // compares runs on different rank counts by (exact in a double below 2^53).
+  out[10] = static_cast<double>(b.original_id.empty() ? J : b.original_id[static_cast<std::size_t>(J)]);
+  out[11] = b.cloud.volume[J];
+  out[12] = b.F[J].determinant();
+  stress_at(b, static_cast<std::size_t>(J), out + 13, out[22]);
+  std::copy_n(h.data(), 3, out + 23);
 }
 
 }  // namespace
@@ -52,9 +55,9 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   }
 
   io::Frame frame;
-  std::vector<io::PointField> fields = {{"displacement", 3, {}}, {"velocity", 3, {}}, {"body_id", 1, {}},
-                                        {"volume", 1, {}},       {"J", 1, {}},        {"cauchy_stress", 9, {}},
-                                        {"von_mises", 1, {}},    {"director", 3, {}}};
+  std::vector<io::PointField> fields = {
+      {"displacement", 3, {}}, {"velocity", 3, {}},      {"body_id", 1, {}},   {"particle_id", 1, {}}, {"volume", 1, {}},
+      {"J", 1, {}},            {"cauchy_stress", 9, {}}, {"von_mises", 1, {}}, {"director", 3, {}}};
   const std::size_t n_fields = any_director ? fields.size() : fields.size() - 1;
   for (std::size_t f = 0; f < n_fields; ++f) fields[f].values.reserve(total * static_cast<std::size_t>(fields[f].components));
   positions.clear();

@@ -28,17 +28,41 @@ struct OutputFailed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Runs `write`, reporting any failure of it as OutputFailed; a non-finite value found in
-// a frame's data is the simulation's failure, not the disk's, and passes through.
+// Runs `write` (on every rank) and agrees on the outcome: a failure on any rank ends the
+// output on every rank with the lowest failing rank's message (one voice), as the
+// failure it was: a non-finite value found in a frame's data is the simulation's
+// failure and passes as NonFiniteValue; anything else is the disk's, OutputFailed.
 template <class Write>
-void guarded_output(Write&& write) {
+void collective_output(const par::Comm& comm, Write&& write) {
+  std::int64_t kind = 0;  // 1: a non-finite value, 2: an output failure
+  std::string message;
   try {
     write();
-  } catch (const io::NonFiniteValue&) {
-    throw;
+  } catch (const io::NonFiniteValue& e) {
+    kind = 1;
+    message = e.what();
   } catch (const std::exception& e) {
-    throw OutputFailed(e.what());
+    kind = 2;
+    message = e.what();
   }
+  if (!comm.parallel()) {
+    if (kind == 1) throw io::NonFiniteValue(message);
+    if (kind == 2) throw OutputFailed(message);
+    return;
+  }
+  const auto kinds = comm.gather(kind);
+  for (std::size_t r = 0; r < kinds.size(); ++r) {
+    if (kinds[r] == 0) continue;
+    const std::string text = fmt::format("rank {}: {}", r, comm.broadcast(message, static_cast<int>(r)));
+    if (kinds[r] == 1) throw io::NonFiniteValue(text);
+    throw OutputFailed(text);
+  }
+}
+
+// A checkpoint file of this rank: the name itself on one rank, `<name>.<rank>` on more.
+std::filesystem::path rank_file(const std::filesystem::path& path, const par::Comm& comm) {
+  if (!comm.parallel()) return path;
+  return path.string() + "." + std::to_string(comm.rank());
 }
 
 io::Json energy_json(const EnergyLedger& e) {
@@ -57,7 +81,10 @@ io::Json energy_json(const EnergyLedger& e) {
 
 }  // namespace
 
-int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream& log) {
+int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream& root_log) {
+  const par::Comm& comm = *options.comm;
+  std::ostream silent(nullptr);  // the other ranks' messages: rank 0 speaks for the run
+  std::ostream& log = comm.root() ? root_log : silent;
   const auto wall_start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - wall_start).count(); };
 
@@ -72,7 +99,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   std::unique_ptr<World> world;
   try {
-    world = build_world(scene);
+    world = build_world(scene, comm);
   } catch (const SetupError& e) {
     log << "error: " << e.what() << "\n";
     return kBadInput;
@@ -129,20 +156,21 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
                        e.code().message());
     return kOutputFailed;
   }
-  const auto checkpoint_path = options.out_dir / "checkpoint.bin";
+  const auto checkpoint_path = rank_file(options.out_dir / "checkpoint.bin", comm);
   RunClock clock;
   std::optional<io::PvdSeries> series;
   if (!options.restart.empty()) {
     try {
-      read_checkpoint(options.restart, *world, integrator, clock, digest);
-      series = io::PvdSeries::resume(options.out_dir, "frames", world->time);
+      // Every rank reads its own file: a failure on any is the run's.
+      collective_output(comm, [&] { read_checkpoint(rank_file(options.restart, comm), *world, integrator, clock, digest); });
+      collective_output(comm, [&] { series = io::PvdSeries::resume(options.out_dir, "frames", world->time, comm.root()); });
     } catch (const std::exception& e) {
       log << "error: " << e.what() << "\n";
       return kBadInput;
     }
   } else {
     try {
-      series.emplace(options.out_dir, "frames");
+      collective_output(comm, [&] { series.emplace(options.out_dir, "frames", comm.root()); });
     } catch (const std::exception& e) {
       log << fmt::format("error: cannot write the output folder '{}': {}\n", options.out_dir.string(), e.what());
       return kOutputFailed;
@@ -157,7 +185,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
 
   std::optional<History> history;
   try {
-    history.emplace(options.out_dir / "history.csv", *world, shape_body, !options.restart.empty());
+    collective_output(comm, [&] {
+      history.emplace(options.out_dir / "history.csv", *world, shape_body, !options.restart.empty());
+    });
   } catch (const std::exception& e) {
     log << "error: " << e.what() << "\n";
     return kOutputFailed;
@@ -165,10 +195,18 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
 
   std::vector<Vec3> positions;
   auto write_frame = [&] {
-    guarded_output([&] {
-      series->write(world->time, make_frame(*world, cells, positions));
-      history->record(*world, integrator);
-    });
+    if (!comm.parallel()) {
+      collective_output(comm, [&] {
+        series->write(world->time, make_frame(*world, cells, positions));
+        history->record(*world, integrator);
+      });
+    } else {
+      // Each rank's piece, then the .pvtu and the .pvd once all pieces are on disk.
+      const io::Frame piece = make_frame(*world, cells, positions);
+      collective_output(comm, [&] { series->write_piece(world->time, piece, comm.rank()); });
+      collective_output(comm, [&] { series->add_parallel_frame(world->time, piece, comm.size()); });
+      collective_output(comm, [&] { history->record(*world, integrator); });
+    }
     ++clock.frames;
   };
 
@@ -198,7 +236,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
         clock.next_output += every;
       }
       if (checkpoint_every > 0 && world->step % checkpoint_every == 0)
-        guarded_output([&] { write_checkpoint(checkpoint_path, *world, integrator, clock, digest); });
+        collective_output(comm, [&] { write_checkpoint(checkpoint_path, *world, integrator, clock, digest); });
       if (!options.quiet)
         progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
                         relax ? fmt::format("residual {:.2e} (target {:.0e})", integrator.residual(),
@@ -277,7 +315,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     log << "\n";
   }
   try {
-    io::write_json_atomically(options.out_dir / "summary.json", json);
+    collective_output(comm, [&] {
+      if (comm.root()) io::write_json_atomically(options.out_dir / "summary.json", json);
+    });
   } catch (const std::exception& e) {
     // The run's own verdict stands; a summary that cannot be written is reported beside it.
     log << "error: cannot write summary.json: " << e.what() << "\n";

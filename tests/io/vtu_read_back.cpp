@@ -8,6 +8,7 @@
 #include <vtkPoints.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLPUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <stdexcept>
@@ -35,8 +36,20 @@ std::vector<std::int64_t> to_int64(vtkDataArray* array) {
 
 }  // namespace
 
+namespace {
+template <class Reader>
+ReadBack read_with(const std::filesystem::path& path);
+}  // namespace
+
 ReadBack read_vtu_back(const std::filesystem::path& path) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  if (path.extension() == ".pvtu") return read_with<vtkXMLPUnstructuredGridReader>(path);
+  return read_with<vtkXMLUnstructuredGridReader>(path);
+}
+
+namespace {
+template <class Reader>
+ReadBack read_with(const std::filesystem::path& path) {
+  vtkNew<Reader> reader;
   reader->SetFileName(path.string().c_str());
   reader->Update();
   if (reader->GetErrorCode() != 0) throw std::runtime_error("VTK could not read " + path.string());
@@ -67,5 +80,6 @@ ReadBack read_vtu_back(const std::filesystem::path& path) {
   }
   return out;
 }
+}  // namespace
 
 }  // namespace rkpm::io::test

@@ -19,7 +19,8 @@ struct ReadBack {
   std::map<std::string, PointField> field_data;
 };
 
-// Throws std::runtime_error if VTK reports an error reading `path`.
+// Throws std::runtime_error if VTK reports an error reading `path`. A .pvtu (a
+// distributed run's frame) is read with its pieces, as one grid.
 ReadBack read_vtu_back(const std::filesystem::path& path);
 
 }  // namespace rkpm::io::test

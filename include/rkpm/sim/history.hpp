@@ -22,10 +22,13 @@ class History {
  public:
   // `shape_body` may be null. When resuming, keeps the rows up to the restored step (a
   // killed run may have written more, and half a row) and appends.
+  // On a distributed run every rank records (the measures are collective) and rank 0
+  // alone opens and writes the file.
   History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume);
   void record(const World& world, Integrator& integrator);
 
  private:
+  bool writes_ = true;
   std::filesystem::path path_;
   std::ofstream out_;
   const Body* shape_body_;

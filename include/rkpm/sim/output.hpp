@@ -12,8 +12,12 @@ namespace rkpm::sim {
 enum class CellOutput { Mesh, Points };
 
 // Point fields: displacement, velocity (physical, interpolated with Psi), body_id,
-// volume, J, cauchy_stress (9 components), von_mises; director where a body has one
-// (zero vectors elsewhere). `positions` receives the points the frame refers to.
+// particle_id (the particle's number in its body in a one-rank run), volume, J,
+// cauchy_stress (9 components), von_mises; director where a body has one (zero vectors
+// elsewhere). `positions` receives the points the frame refers to.
+// Distributed: this rank's piece, its own particles and, after them, the other nodes of
+// the elements it writes (those whose lowest node it owns), whose values come from
+// their owners; a node at a piece boundary thus appears in more than one piece.
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions);
 
 }  // namespace rkpm::sim

@@ -2,6 +2,7 @@
 // the summary, and the exit status the command line reports.
 #pragma once
 
+#include "rkpm/par/comm.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/preflight.hpp"
 
@@ -29,6 +30,11 @@ struct RunOptions {
   bool allow_unstable_dt = false;     // testing: keep a user dt above the stable estimate
   bool quiet = false;                 // no progress line
   RunLimits limits;                   // memory and disk the run must fit in (default: the machine's)
+  // The ranks the run is distributed over. On more than one, rank 0 alone writes the
+  // log, history.csv, summary.json and the .pvd; each rank writes its piece of every
+  // frame and its own checkpoint (`checkpoint.bin.<rank>`; `restart` names the file
+  // without the suffix).
+  const par::Comm* comm = &par::Comm::world();
 };
 
 // Runs the scene; messages go to `log` (progress, warnings, diagnoses). Returns an ExitCode.

@@ -1,0 +1,192 @@
+// Run under mpirun with 2 ranks (tests/par/CMakeLists.txt). Whole runs of the sag
+// example (a clamped Mooney-Rivlin block under a body force) distributed over the
+// ranks against a one-rank run of the same scene in the same process (Comm::self()):
+// the relaxation lands on the same state, 200 dynamic steps follow the same path, a
+// restart on the same rank count continues bit for bit, and what cannot run
+// distributed, or blows up, ends every rank with one message and one exit code.
+#include "rkpm/io/pvd_series.hpp"
+#include "rkpm/par/comm.hpp"
+#include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/run.hpp"
+#include "sim_fixtures.hpp"
+#include "vtu_read_back.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <map>
+#include <sstream>
+
+using namespace rkpm;
+using namespace rkpm::sim;
+using namespace rkpm::sim::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+const par::Comm& world() { return par::Comm::world(); }
+
+std::string sag_scene() { return read_text(fs::path(RKPM_SOURCE_DIR) / "examples/sag/sag.toml"); }
+
+// `text` with its one occurrence of `old` replaced (throws if absent: a test must not
+// silently run the unmodified scene).
+std::string replaced(std::string text, const std::string& old, const std::string& by) {
+  const auto at = text.find(old);
+  if (at == std::string::npos) throw std::invalid_argument("'" + old + "' not in the scene text");
+  return text.replace(at, old.size(), by);
+}
+
+// One directory for every rank: rank 0 names it.
+fs::path shared_dir(const std::string& tag) {
+  std::string name = world().root() ? fresh_dir(tag).string() : std::string();
+  return fs::path(world().broadcast(name, 0));
+}
+
+struct Outcome {
+  int code = -1;
+  std::string log;
+};
+
+Outcome run(const std::string& text, const fs::path& out, const par::Comm& comm, std::int64_t max_steps = 0,
+            const fs::path& restart = {}, bool allow_unstable = false) {
+  const auto scene = scene::parse_scene(text, (fs::path(RKPM_SOURCE_DIR) / "examples/sag/sag.toml").string());
+  RunOptions options;
+  options.out_dir = out;
+  options.quiet = true;
+  options.comm = &comm;
+  options.max_steps_override = max_steps;
+  options.restart = restart;
+  options.allow_unstable_dt = allow_unstable;
+  std::ostringstream log;
+  Outcome o;
+  o.code = run_scene(scene, options, log);
+  o.log = log.str();
+  return o;
+}
+
+// Final positions by particle_id, read through VTK as ParaView would (.vtu or .pvtu).
+std::map<std::int64_t, Vec3> final_positions(const fs::path& dir, double* largest_displacement) {
+  const auto entries = io::read_pvd(dir / "frames.pvd");
+  const auto frame = io::test::read_vtu_back(dir / entries.back().file);
+  const auto& ids = frame.point_fields.at("particle_id").values;
+  const auto& u = frame.point_fields.at("displacement").values;
+  std::map<std::int64_t, Vec3> p;
+  for (std::size_t i = 0; i < frame.points.size(); ++i) {
+    p[static_cast<std::int64_t>(ids[i])] = frame.points[i];
+    if (largest_displacement)
+      *largest_displacement = std::max(*largest_displacement, Vec3(u[3 * i], u[3 * i + 1], u[3 * i + 2]).norm());
+  }
+  return p;
+}
+
+// The largest distance between the two runs' final positions, over the largest displacement.
+double compare_final(const fs::path& serial, const fs::path& distributed) {
+  double scale = 0.0;
+  const auto a = final_positions(serial, &scale);
+  const auto b = final_positions(distributed, nullptr);
+  EXPECT_EQ(a.size(), b.size()) << "every particle appears in the distributed frame";
+  double worst = 0.0;
+  for (const auto& [id, p] : a) {
+    const auto it = b.find(id);
+    if (it == b.end()) {
+      ADD_FAILURE() << "particle " << id << " missing from the distributed frame";
+      continue;
+    }
+    worst = std::max(worst, (it->second - p).norm());
+  }
+  EXPECT_GT(scale, 0.0);
+  return worst / scale;
+}
+
+std::string summary_value(const fs::path& dir, const std::string& key) {
+  const std::string text = read_text(dir / "summary.json");
+  const auto at = text.find("\"" + key + "\"");
+  if (at == std::string::npos) return {};
+  const auto start = text.find(':', at) + 1;
+  return text.substr(start, text.find_first_of(",\n}", start) - start);
+}
+
+}  // namespace
+
+TEST(DistributedRun, SagRelaxationLandsOnTheOneRankState) {
+  ASSERT_EQ(world().size(), 2) << "run this test with mpirun -np 2";
+  const fs::path dir = shared_dir("sag_relax");
+  const Outcome d = run(sag_scene(), dir / "two", world());
+  EXPECT_EQ(d.code, kSuccess) << d.log;
+  if (!world().root()) return;
+  const Outcome s = run(sag_scene(), dir / "one", par::Comm::self());
+  ASSERT_EQ(s.code, kSuccess) << s.log;
+  EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
+  const double error = compare_final(dir / "one", dir / "two");
+  std::cout << "relaxed sag, 2 ranks against 1: final positions differ by " << error
+            << " of the largest displacement; steps " << summary_value(dir / "two", "steps") << "\n";
+  EXPECT_LT(error, 1e-10);
+  EXPECT_TRUE(fs::exists(dir / "two" / "frames_000000_1.vtu"));
+  EXPECT_TRUE(fs::exists(dir / "two" / "history.csv"));
+}
+
+TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
+  const fs::path dir = shared_dir("sag_dynamic");
+  const std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"dynamic\"\nt_end = 1e-3\ndamping = 2e4");
+  const Outcome d = run(text, dir / "two", world(), 200);
+  EXPECT_EQ(d.code, kSuccess) << d.log;
+  if (!world().root()) return;
+  const Outcome s = run(text, dir / "one", par::Comm::self(), 200);
+  ASSERT_EQ(s.code, kSuccess) << s.log;
+  const double error = compare_final(dir / "one", dir / "two");
+  std::cout << "dynamic sag, 200 steps, 2 ranks against 1: " << error << " of the largest displacement\n";
+  EXPECT_LT(error, 1e-9);
+}
+
+TEST(DistributedRun, RestartOnTheSameRankCountContinuesBitForBit) {
+  const fs::path dir = shared_dir("sag_restart");
+  const std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"dynamic\"\nt_end = 1e-3\ndamping = 2e4");
+  const std::string checkpointed = replaced(text, "every = 1e-5", "every = 1e-5\ncheckpoint_every = 50");
+  EXPECT_EQ(run(checkpointed, dir / "whole", world(), 150).code, kSuccess);
+  EXPECT_EQ(run(checkpointed, dir / "parts", world(), 100).code, kSuccess);
+  EXPECT_TRUE(fs::exists(dir / "parts" / ("checkpoint.bin." + std::to_string(world().rank()))));
+  const Outcome resumed = run(checkpointed, dir / "parts", world(), 150, dir / "parts" / "checkpoint.bin");
+  EXPECT_EQ(resumed.code, kSuccess) << resumed.log;
+  if (world().root()) {
+    EXPECT_EQ(compare_final(dir / "whole", dir / "parts"), 0.0);
+    // The checkpoint of a 2-rank run is refused on one rank, naming the rank count.
+    const Outcome single = run(checkpointed, dir / "single", par::Comm::self(), 150, dir / "parts" / "checkpoint.bin.0");
+    EXPECT_EQ(single.code, kBadInput);
+    EXPECT_NE(single.log.find("on 2 rank(s)"), std::string::npos) << single.log;
+  }
+}
+
+TEST(DistributedRun, WhatDoesNotRunDistributedIsRefusedOnceWithTheLine) {
+  const fs::path dir = shared_dir("sag_refused");
+  const std::string text =
+      sag_scene() + "\n[[term]]\ntype = \"surface_pressure\"\nbody = \"block\"\nsurface = \"zmax\"\npressure = 10.0\n";
+  const Outcome d = run(text, dir / "two", world());
+  EXPECT_EQ(d.code, kBadInput);
+  if (world().root()) {
+    EXPECT_NE(d.log.find("type = \"surface_pressure\" does not run on more than one rank"), std::string::npos) << d.log;
+    EXPECT_NE(d.log.find("sag.toml:"), std::string::npos) << d.log;
+  } else {
+    EXPECT_EQ(d.log, "");  // rank 0 speaks for the run
+  }
+  EXPECT_FALSE(fs::exists(dir / "two" / "frames.pvd"));
+}
+
+TEST(DistributedRun, ABlowUpStopsEveryRankWithTheSameDiagnosis) {
+  const fs::path dir = shared_dir("sag_unstable");
+  const std::string text =
+      replaced(sag_scene(), "mode = \"relax\"", "mode = \"dynamic\"\nt_end = 1e-3\ndt = 1e-6");
+  const Outcome d = run(text, dir / "two", world(), 0, {}, true);
+  EXPECT_EQ(d.code, kUnstable);
+  if (world().root()) {
+    EXPECT_NE(d.log.find("unstable at step"), std::string::npos) << d.log;
+    EXPECT_NE(summary_value(dir / "two", "diagnosis"), "");
+    const auto entries = io::read_pvd(dir / "two" / "frames.pvd");
+    EXPECT_FALSE(entries.empty());  // the last good frame is kept
+  }
+}
+
+int main(int argc, char** argv) {
+  rkpm::par::Session mpi(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}
