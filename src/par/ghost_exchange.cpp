@@ -17,13 +17,13 @@ void pack(const std::vector<Index>& ids, const double* data, int stride, std::ve
 }  // namespace
 
 void GhostExchange::build(const Comm& comm, const std::vector<Index>& offset,
-                          const std::vector<rk::RowScatter::Pattern>& patterns) {
+                          const std::vector<rk::RowScatter::Pattern>& patterns, std::vector<Index> extra) {
   if (offset.size() != static_cast<std::size_t>(comm.size()) + 1)
     throw std::invalid_argument(fmt::format("ghost layer: {} particle ranges for {} ranks", offset.size() - 1,
                                             comm.size()));
   const Index begin = offset[static_cast<std::size_t>(comm.rank())];
   const Index end = offset[static_cast<std::size_t>(comm.rank()) + 1];
-  std::vector<Index> columns;
+  std::vector<Index> columns = std::move(extra);
   for (const auto& p : patterns)
     for (Index L = begin; L < end; ++L)
       for (Index k = (*p.row_offset)[L]; k < (*p.row_offset)[L + 1]; ++k) columns.push_back((*p.col)[k]);

@@ -168,7 +168,8 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
 // buffer, held several times the result's memory.)
 void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
                          std::vector<Index>& col, std::vector<double>& psi,
-                         const std::function<std::string(std::size_t)>& label) {
+                         const std::function<std::string(std::size_t)>& label, const std::vector<char>& rows = {}) {
+  const auto selected = [&](std::size_t p) { return rows.empty() || rows[p] != 0; };
   constexpr std::size_t block = 512;
   const std::size_t m = points.size();
   const std::size_t n_blocks = (m + block - 1) / block;
@@ -181,6 +182,10 @@ void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& poi
     for (std::size_t b = 0; b < n_blocks; ++b) {
       auto& piece = pieces[b];
       for (std::size_t p = b * block; p < std::min(m, (b + 1) * block); ++p) {
+        if (!selected(p)) {
+          piece.length.push_back(0);
+          continue;
+        }
         if (!rk.evaluate(points[p], values, false)) {
           error.record(static_cast<Index>(p), "");
           break;
@@ -195,7 +200,8 @@ void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& poi
     error.rethrow();
   } catch (const ApproximationError&) {
     ShapeValues values;
-    for (std::size_t p = 0; p < m; ++p) rk.evaluate_or_throw(points[p], values, false, label(p));
+    for (std::size_t p = 0; p < m; ++p)
+      if (selected(p)) rk.evaluate_or_throw(points[p], values, false, label(p));
   }
   join(pieces, row_offset, col, psi);
 }
@@ -225,7 +231,7 @@ namespace {
 // single-precision operator.
 template <class Stored>
 void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& rk, Integration scheme,
-                         GradientOperator& op, std::vector<Stored>& grad) {
+                         const std::vector<char>& rows, GradientOperator& op, std::vector<Stored>& grad) {
   const auto n = static_cast<Index>(cloud.size());
   constexpr Index block = 1024;
   const Index n_blocks = (n + block - 1) / block;
@@ -247,6 +253,10 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
       const Index block_begin = b * block, block_end = std::min(n, (b + 1) * block);
       shared.clear();
       for (Index L = block_begin; L < block_end; ++L) {
+        if (!rows.empty() && rows[static_cast<std::size_t>(L)] == 0) {
+          piece.length.push_back(0);  // another rank's point
+          continue;
+        }
         const Vec3& XL = cloud.X[L];
         if (scheme == Integration::Direct) {
           if (!rk.evaluate(XL, sv, true)) {
@@ -310,12 +320,13 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
 }  // namespace
 
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
-                                         Integration scheme, GradientPrecision precision) {
+                                         Integration scheme, GradientPrecision precision,
+                                         const std::vector<char>& rows) {
   GradientOperator op;
   if (precision == GradientPrecision::Float)
-    build_gradient_rows(cloud, rk, scheme, op, op.grad_float);
+    build_gradient_rows(cloud, rk, scheme, rows, op, op.grad_float);
   else
-    build_gradient_rows(cloud, rk, scheme, op, op.grad);
+    build_gradient_rows(cloud, rk, scheme, rows, op, op.grad);
   return op;
 }
 
@@ -340,10 +351,12 @@ BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, cons
   return q;
 }
 
-NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk) {
+NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk,
+                                             const std::vector<char>& rows) {
   NodalInterpolation interp;
-  shape_function_rows(rk, cloud.X, interp.row_offset, interp.col, interp.psi,
-                      [&](std::size_t j) { return particle_label(cloud, static_cast<Index>(j)); });
+  shape_function_rows(
+      rk, cloud.X, interp.row_offset, interp.col, interp.psi,
+      [&](std::size_t j) { return particle_label(cloud, static_cast<Index>(j)); }, rows);
   return interp;
 }
 

@@ -85,9 +85,18 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
           dir.h[i] = oriented(cloud.boundary_normal[bi], i);
           continue;
         }
-        // Inside: the normal of the nearest surface particle (the lowest id among equals;
-        // `found` then holds all of them).
-        dir.h[i] = oriented(cloud.boundary_normal[search.nearest(cloud.X[i], found).first], i);
+        // Inside: the normal of the nearest surface particle; among equals (`found` then
+        // holds all of them) the lowest id in the one-rank numbering, so that the choice
+        // does not depend on how a distributed run renumbered the particles.
+        const auto nearest = search.nearest(cloud.X[i], found);
+        Index pick = nearest.first;
+        const auto one_rank_id = [&](Index b) {
+          const auto p = static_cast<std::size_t>(cloud.boundary_particles[static_cast<std::size_t>(b)]);
+          return body.original_id.empty() ? static_cast<std::int64_t>(p) : body.original_id[p];
+        };
+        for (const auto& f : found)
+          if (f.second == nearest.second && one_rank_id(f.first) < one_rank_id(pick)) pick = f.first;
+        dir.h[i] = oriented(cloud.boundary_normal[pick], i);
         for (const auto& f : found)
           if (oriented(cloud.boundary_normal[f.first], i).dot(dir.h[i]) < 0.5) ambiguous[i] = 1;  // > 60 deg apart
       }
@@ -176,12 +185,25 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   }
   const auto& cloud = body->cloud;
   const std::size_t n = cloud.size();
+  const std::vector<ConstrainedComponent> constrained = constrained_components(spec, cloud);
 
   try {
     body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
     const auto scheme = integration_scheme(spec.rk);
-    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme, gradient_precision(spec.rk));
-    body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk);
+    // Distributed: this rank builds the rows of the points it owns (and, of the
+    // interpolation, those of the constrained particles too, whose small system every
+    // rank solves); the others' rows stay empty, so the operators' memory and set-up
+    // time are divided over the ranks.
+    std::vector<char> own_rows, interpolation_rows;
+    if (comm.parallel()) {
+      own_rows.assign(n, 0);
+      std::fill(own_rows.begin() + partition.offset[static_cast<std::size_t>(comm.rank())],
+                own_rows.begin() + partition.offset[static_cast<std::size_t>(comm.rank()) + 1], 1);
+      interpolation_rows = own_rows;
+      for (const auto& c : constrained) interpolation_rows[static_cast<std::size_t>(c.particle)] = 1;
+    }
+    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme, gradient_precision(spec.rk), own_rows);
+    body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk, interpolation_rows);
   } catch (const rk::ApproximationError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
   }
@@ -219,16 +241,28 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->stabilization =
       rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
   try {
-    body->constraints = EssentialBC(body->interpolation, constrained_components(spec, cloud), body->d);
+    body->constraints = EssentialBC(body->interpolation, constrained, body->d);
   } catch (const std::runtime_error& e) {
     throw SetupError(fmt::format("{}: body '{}': {}", spec.body.file(), body->name, e.what()));
   }
   // The rows this rank owns reference the ghosts: through the smoothed gradients and,
   // for the stabilization and the physical displacement, the interpolation.
   if (comm.parallel()) {
+    // The current normals at an owned surface particle (the director's anchoring) read
+    // the nodes of every surface face it belongs to.
+    std::vector<Index> face_nodes;
+    for (const auto& face : cloud.boundary_faces) {
+      const auto* nodes = face.nodes;
+      const bool touches = std::any_of(nodes, nodes + face.n_nodes, [&](std::int32_t i) {
+        return i >= partition.offset[static_cast<std::size_t>(comm.rank())] &&
+               i < partition.offset[static_cast<std::size_t>(comm.rank()) + 1];
+      });
+      if (touches) face_nodes.insert(face_nodes.end(), nodes, nodes + face.n_nodes);
+    }
     body->ghosts.build(comm, partition.offset,
                        {{&body->gradient.row_offset, &body->gradient.col},
-                        {&body->interpolation.row_offset, &body->interpolation.col}});
+                        {&body->interpolation.row_offset, &body->interpolation.col}},
+                       std::move(face_nodes));
     body->constraints.distribute(comm, partition.offset);
     // A frame's piece holds the elements whose lowest node this rank owns (each element
     // written once over the ranks), with their other nodes as a halo.
@@ -298,16 +332,13 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   return s;
 }
 
-namespace {
-// What this version runs on more than one rank: every material's internal force and
-// FIRE or explicit dynamics, essential boundary conditions, and the terms that say so
-// (Term::distributed). Anything else is refused before a particle is built, naming
-// the scene's line, so that no rank count silently changes the physics.
 void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
+  if (!comm.parallel()) return;
   const auto refuse = [&](const scene::ParamSet& p, int line, const std::string& what) {
     throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the "
                                  "scene as one process (without mpirun). Distributed: every material's internal "
-                                 "force, essential boundary conditions, body_force, FIRE and explicit dynamics",
+                                 "force and LCE director, essential boundary conditions, body_force, "
+                                 "volume_constraint, FIRE and explicit dynamics",
                                  p.file(), line, what, comm.size()));
   };
   const auto& in = scene.integrator;
@@ -316,15 +347,21 @@ void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
   if (in.choice("stable_step") == "measured") refuse(in, in.line("stable_step"), "[integrator] stable_step = \"measured\"");
   if (!scene.output.text("shape_report").empty())
     refuse(scene.output, scene.output.line("shape_report"), "[output] shape_report");
-  for (const auto& body : scene.bodies)
-    if (body.director)
-      refuse(*body.director, body.director->table_line(),
-             fmt::format("body '{}': the director field (Eq. 5-8) of an LCE body", body.name()));
 }
-}  // namespace
+
+void check_distributable_terms(const scene::Scene& scene, const World& world) {
+  if (!world.comm->parallel()) return;
+  for (std::size_t k = 0; k < world.terms.size(); ++k)
+    if (!world.terms[k]->distributed()) {
+      const auto& term = scene.terms[k];
+      throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
+                                   "has {}); run the scene as one process (without mpirun). Distributed terms: "
+                                   "body_force, volume_constraint",
+                                   term.params.file(), term.params.table_line(), term.type(), world.comm->size()));
+    }
+}
 
 std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm) {
-  if (comm.parallel()) check_distributable(scene, comm);
   auto world = std::make_unique<World>();
   world->comm = &comm;
   const auto seed = static_cast<std::uint64_t>(scene.integrator.integer("seed"));
@@ -334,14 +371,7 @@ std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& c
     world->bodies.push_back(build_body(spec, id++, seed, comm, warning));
     if (!warning.empty()) world->setup_warnings.push_back(warning);
   }
-  for (const auto& term : scene.terms) {
-    world->terms.push_back(terms::make_term(term, *world));
-    if (comm.parallel() && !world->terms.back()->distributed())
-      throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
-                                   "has {}); run the scene as one process (without mpirun). Distributed terms: "
-                                   "body_force",
-                                   term.params.file(), term.params.table_line(), term.type(), comm.size()));
-  }
+  for (const auto& term : scene.terms) world->terms.push_back(terms::make_term(term, *world));
   return world;
 }
 

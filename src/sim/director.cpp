@@ -9,13 +9,13 @@ namespace {
 using materials::lce::director_point;
 
 // Passive energy sum_L V_L W(F_L, h_L) at the current F and Grad h (the latter as last
-// computed by the force loop).
+// computed by the force loop), over this rank's points.
 double director_energy(const Body& body, const materials::LiquidCrystalElastomer& model) {
   const DirectorField& dir = *body.director;
-  const auto n = static_cast<Index>(body.size());
   double total = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : total)
-  for (Index L = 0; L < n; ++L) total += body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L));
+  for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
+    total += body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L));
   return total;
 }
 }  // namespace
@@ -25,9 +25,11 @@ DirectorStep advance_director(Body& body, double dt) {
   const auto& material = std::get<materials::lce::BodyMaterial>(body.material);
   const auto& model = material.model;
   DirectorField& dir = *body.director;
-  const auto n = static_cast<Index>(body.size());
+  const Index begin = body.owned_begin(), end = body.owned_end();
 
-  // dF/dt = sum_I v_I (x) b_I: the smoothed velocity gradient in the reference frame.
+  // dF/dt = sum_I v_I (x) b_I: the smoothed velocity gradient in the reference frame
+  // (distributed: at the owned points, from the ghosts' current velocities).
+  if (body.distributed()) body.ghosts.pull(body.v);
   rk::deformation_gradients(body.gradient, body.v, dir.F_rate);
 
   DirectorStep result;
@@ -35,7 +37,7 @@ DirectorStep advance_director(Body& body, double dt) {
   double& active = result.active_power;
   if (model.zeta != 0.0) {
 #pragma omp parallel for schedule(static) reduction(+ : active)
-    for (Index L = 0; L < n; ++L)
+    for (Index L = begin; L < end; ++L)
       // The active stress is part of the internal force -sum_L V_L P_L b_I, so it puts
       // energy in at the rate -sum_L V_L P_a : dF/dt.
       active -= body.gradient.weight[L] * material.activity_at(L) *
@@ -44,7 +46,7 @@ DirectorStep advance_director(Body& body, double dt) {
 
   if (dir.evolve) {
 #pragma omp parallel for schedule(static)
-    for (Index I = 0; I < n; ++I) {
+    for (Index I = begin; I < end; ++I) {
       const materials::DirectorPoint p = director_point(dir, I);
       const Mat3 l = dir.F_rate[I] * body.F[I].inverse();
       const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
@@ -63,6 +65,7 @@ DirectorStep advance_director(Body& body, double dt) {
     const auto nb = static_cast<Index>(ids.size());
 #pragma omp parallel for schedule(static)
     for (Index k = 0; k < nb; ++k) {
+      if (ids[k] < begin || ids[k] >= end) continue;  // another rank's particle
       const Vec3& nrm = dir.normals[k];
       Vec3& h = dir.h[ids[k]];
       h = h.dot(nrm) >= 0.0 ? nrm : Vec3(-nrm);

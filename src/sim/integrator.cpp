@@ -12,10 +12,12 @@ namespace rkpm::sim {
 
 namespace {
 
-double body_volume(const Body& body) {
+// The integration weights' sum: this rank's rows (a distributed run's other rows are
+// empty, weight 0), summed over the ranks.
+double body_volume(const World& world, const Body& body) {
   double v = 0.0;
-  for (double w : body.gradient.weight) v += w;
-  return v;
+  for (Index L = body.owned_begin(); L < body.owned_end(); ++L) v += body.gradient.weight[L];
+  return world.comm->sum(v);
 }
 
 }  // namespace
@@ -146,6 +148,14 @@ void Integrator::initialize() {
   ledger_.initial = ledger_.kinetic + stored_energy();
   active_power_ = 0.0;
   check_state();
+  // The relaxation's scales, fixed for the run: each body's mean shear modulus, and
+  // sum over bodies of mu V.
+  body_shear_modulus_.clear();
+  reference_energy_ = 0.0;
+  for (const auto& bp : world_.bodies) {
+    body_shear_modulus_.push_back(mean_shear_modulus(*bp));
+    reference_energy_ += body_shear_modulus_.back() * body_volume(world_, *bp);
+  }
   update_convergence(kinetic_energy(world_));
 }
 
@@ -249,8 +259,8 @@ void Integrator::director(StepBook& book) {
   for (auto& bp : world_.bodies)
     if (bp->director) {
       const DirectorStep d = advance_director(*bp, book.h);
-      active_power_ += d.active_power;
-      book.director_energy.push_back(d.energy_change);
+      active_power_ += world_.comm->sum(d.active_power);
+      book.director_energy.push_back(world_.comm->sum(d.energy_change));
     }
 }
 
@@ -330,17 +340,16 @@ double Integrator::mode_step_limit() const {
 // be declared converged at the first stop where the residual happens to be below its
 // tolerance (docs/relaxation.md, "Where the default run stopped").
 void Integrator::update_convergence(double kinetic_of_motion) {
-  double residual = 0.0, reference_energy = 0.0;
-  for (const auto& bp : world_.bodies) {
-    const Body& b = *bp;
-    const double mu = mean_shear_modulus(b);
-    reference_energy += mu * body_volume(b);
+  double residual = 0.0;
+  for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
+    const Body& b = *world_.bodies[k];
+    const double mu = body_shear_modulus_[k];
 #pragma omp parallel for schedule(static) reduction(max : residual)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
       residual = std::max(residual, b.force[i].norm() / (mu * std::cbrt(b.cloud.volume[i] * b.cloud.volume[i])));
   }
   residual_ = world_.comm->max(residual);
-  kinetic_measure_ = kinetic_of_motion / reference_energy;
+  kinetic_measure_ = kinetic_of_motion / reference_energy_;
 }
 
 bool Integrator::converged() const {

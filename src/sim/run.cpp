@@ -65,6 +65,31 @@ std::filesystem::path rank_file(const std::filesystem::path& path, const par::Co
   return path.string() + "." + std::to_string(comm.rank());
 }
 
+// Per body and rank: the particles owned, the ghosts held, and the doubles a force
+// evaluation exchanges (each ghost's displacement in, its force contribution out).
+// Collective: every rank calls it.
+io::Json distribution_json(const World& world) {
+  const par::Comm& comm = *world.comm;
+  io::Json bodies = io::Json::array();
+  for (const auto& b : world.bodies) {
+    const auto owned = comm.gather(static_cast<std::int64_t>(b->owned_end() - b->owned_begin()));
+    const auto ghosts = comm.gather(static_cast<std::int64_t>(b->ghosts.ghost_count()));
+    io::Json j = io::Json::object();
+    j.set("body", b->name);
+    io::Json o = io::Json::array(), g = io::Json::array(), v = io::Json::array();
+    for (std::size_t r = 0; r < owned.size(); ++r) {
+      o.push_back(owned[r]);
+      g.push_back(ghosts[r]);
+      v.push_back(6 * ghosts[r]);
+    }
+    j.set("owned", std::move(o));
+    j.set("ghosts", std::move(g));
+    j.set("doubles_received_and_returned_per_force_evaluation", std::move(v));
+    bodies.push_back(std::move(j));
+  }
+  return bodies;
+}
+
 io::Json energy_json(const EnergyLedger& e) {
   io::Json j = io::Json::object();
   j.set("kinetic", e.kinetic);
@@ -99,7 +124,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   std::unique_ptr<World> world;
   try {
+    check_distributable(scene, comm);
     world = build_world(scene, comm);
+    check_distributable_terms(scene, *world);
   } catch (const SetupError& e) {
     log << "error: " << e.what() << "\n";
     return kBadInput;
@@ -271,6 +298,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   summary.status = status;
   io::Json json = io::to_json(summary);
   json.set("threads", omp_get_max_threads());
+  json.set("ranks", comm.size());
+  if (comm.parallel()) json.set("distribution", distribution_json(*world));
   json.set("dt", integrator.dt());
   json.set("stable_dt", integrator.stable_dt());
   json.set("force_evaluations", integrator.force_evaluations());

@@ -29,8 +29,10 @@ class GhostExchange {
   // `offset` (ranks + 1 entries) gives each rank's range of particles and rows; the
   // patterns are CSR row_offset/col pairs over the body's rows (one row per particle):
   // the ghosts are the columns of the rows this rank owns that it does not own.
+  // `extra`: other particles the rank reads (the nodes of the surface faces at its
+  // particles, which the current normals need).
   void build(const Comm& comm, const std::vector<Index>& offset,
-             const std::vector<rk::RowScatter::Pattern>& patterns);
+             const std::vector<rk::RowScatter::Pattern>& patterns, std::vector<Index> extra = {});
   // The same for a given set of particles (any order, repeats and owned ones ignored).
   void build(const Comm& comm, const std::vector<Index>& offset, std::vector<Index> ghosts);
 

@@ -98,14 +98,18 @@ struct NodalInterpolation {
   std::vector<double> psi;
 };
 
+// `rows` selects the rows to build (rows[L] != 0), for a rank of a distributed run that
+// evaluates only its own points; the others stay empty, with weight 0. Empty: every row.
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
                                          Integration scheme,
-                                         GradientPrecision precision = GradientPrecision::Double);
+                                         GradientPrecision precision = GradientPrecision::Double,
+                                         const std::vector<char>& rows = {});
 // The facets on the named surfaces of `surface_bits` (Cloud::surface_bit; 0 = the whole
 // boundary). Built by the terms that integrate over a surface, for their surface only.
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
                                              std::uint32_t surface_bits = 0u);
-NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk);
+NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk,
+                                             const std::vector<char>& rows = {});
 
 // sum_I Psi_I(X_J) v_I over row J: the field of the generalized values v at particle J
 // (physical displacement from d, physical velocity from v). The one interpolation

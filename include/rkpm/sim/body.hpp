@@ -131,6 +131,8 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
 // Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
 // of Eq. 7 with the current velocity gradient, renormalisation to unit length, and
 // h = current outward normal on the surface when anchored). LCE bodies only.
+// Distributed: at this rank's particles, and the DirectorStep is this rank's share
+// (the ghost layer holds the nodes of the boundary faces the normals need).
 struct DirectorStep {
   double active_power = 0.0;   // work rate of the active stress (Eq. 1), -sum_L V_L P_a : dF/dt [W]
   double energy_change = 0.0;  // change of the stored energy by the director update at fixed F [J]:

@@ -145,6 +145,8 @@ class Integrator {
   double term_power_ = 0.0, active_power_ = 0.0, support_power_ = 0.0;
   double residual_ = 0.0, kinetic_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
+  std::vector<double> body_shear_modulus_;  // mean_shear_modulus of each body (the residual's scale)
+  double reference_energy_ = 0.0;           // sum over bodies of mu V (the kinetic measure's scale)
   double unscaled_stable_dt_ = 0.0;  // the stable step before mass scaling (for the report)
   double calibration_ = 1.0;         // applied to bodies_wave_dt() (measured_stable_step)
   double motion_dt_ = std::numeric_limits<double>::infinity();  // motion_limited_dt() after the last step

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rkpm::sim {
 
@@ -25,8 +26,9 @@ Mat3 cofactor(const Mat3& F) {
 }
 }  // namespace
 
-VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double bulk, double target)
-    : body_(body), bulk_(bulk), target_(target) {
+VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double bulk, double target,
+                                   const par::Comm& comm)
+    : body_(body), comm_(comm), bulk_(bulk), target_(target) {
   // Group the chosen facets by the cell that owns them (the boundary quadrature lists a
   // cell's facets together) and fold each cell's facets into one row:
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
@@ -66,9 +68,32 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
+  if (body.distributed()) check_ghosts();
   const double v = measure_signed_volume();
   sign_ = v < 0.0 ? -1.0 : 1.0;
   initial_ = volume_ = std::abs(v);
+}
+
+// The rows a rank measures read d at their columns: each must be the rank's own particle
+// or one of its ghosts (the facets are part of the cell's SCNI boundary, so their
+// supports are within the gradient row's columns).
+void VolumeConstraint::check_ghosts() const {
+  std::vector<char> readable(body_.size(), 0);
+  std::fill(readable.begin() + body_.owned_begin(), readable.begin() + body_.owned_end(), 1);
+  for (const auto& group : body_.ghosts.ghosts_by_owner())
+    for (Index g : group) readable[static_cast<std::size_t>(g)] = 1;
+  for (std::size_t r = 0; r < owner_.size(); ++r) {
+    if (!owns_row(r)) continue;
+    for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k)
+      if (!readable[static_cast<std::size_t>(col_[k])])
+        throw std::logic_error(fmt::format("volume constraint on body '{}': the surface row of particle {} reads "
+                                           "particle {}, which its rank neither owns nor holds as a ghost",
+                                           body_.name, owner_[r], col_[k]));
+  }
+}
+
+bool VolumeConstraint::owns_row(std::size_t r) const {
+  return owner_[r] >= body_.owned_begin() && owner_[r] < body_.owned_end();
 }
 
 double VolumeConstraint::measure_signed_volume() {
@@ -76,6 +101,10 @@ double VolumeConstraint::measure_signed_volume() {
   const auto m = static_cast<Index>(owner_.size());
 #pragma omp parallel for schedule(static)
   for (Index r = 0; r < m; ++r) {
+    if (!owns_row(static_cast<std::size_t>(r))) {
+      cone_[r] = 0.0;  // another rank's cell
+      continue;
+    }
     Mat3 G = C_[r];
     for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) G.noalias() += body_.d[col_[k]] * B_[k].transpose();
     cofactor_[r] = cofactor(body_.F[owner_[r]]);
@@ -83,7 +112,7 @@ double VolumeConstraint::measure_signed_volume() {
   }
   double v = 0.0;
   for (double c : cone_) v += c;  // in row order: deterministic
-  return v;
+  return comm_.sum(v);
 }
 
 void VolumeConstraint::add_forces(World&) {
@@ -93,13 +122,25 @@ void VolumeConstraint::add_forces(World&) {
   const auto& T = by_particle_;
   const double scale = pressure_ * sign_;
   const auto n = static_cast<Index>(body_.size());
+  if (!body_.distributed()) {
 #pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I) {
-    if (T.offset[I] == T.offset[I + 1]) continue;
-    Vec3 push = Vec3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push.noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
-    body_.force[I] += scale * push;
+    for (Index I = 0; I < n; ++I) {
+      if (T.offset[I] == T.offset[I + 1]) continue;
+      Vec3 push = Vec3::Zero();
+      for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push.noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
+      body_.force[I] += scale * push;
+    }
+    return;
   }
+  // Distributed: the owned rows' push on every particle they reach, ghosts included,
+  // then the ghosts' part returned to the owners.
+  ghost_push_.assign(body_.size(), Vec3::Zero());
+#pragma omp parallel for schedule(static)
+  for (Index I = 0; I < n; ++I)
+    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t)
+      if (owns_row(static_cast<std::size_t>(T.row[t]))) ghost_push_[I].noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
+  body_.ghosts.push_add(ghost_push_);
+  for (Index I = body_.owned_begin(); I < body_.owned_end(); ++I) body_.force[I] += scale * ghost_push_[I];
 }
 
 double VolumeConstraint::stored_energy(const World&) const {
@@ -128,7 +169,8 @@ namespace rkpm::terms::volume_constraint {
 std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
   const sim::VolumeConstraintSettings s = settings_table().read(params);
   sim::Body& body = named_body(world, params, s.body);
-  return std::make_unique<sim::VolumeConstraint>(body, surface_selector(body, s.surface), s.bulk, s.target);
+  return std::make_unique<sim::VolumeConstraint>(body, surface_selector(body, s.surface), s.bulk, s.target,
+                                                 *world.comm);
 }
 
 }  // namespace rkpm::terms::volume_constraint

@@ -17,6 +17,8 @@
 // of a scene with this term closes only to that order.
 // The term is declared per scene ([[term]] type = "volume_constraint"); a body
 // without it has no enclosed fluid at all.
+// Distributed: a rank measures the rows of the cells it owns (the volume is summed over
+// the ranks) and returns the force its rows put on ghosts to their owners.
 // Cost: the facets are folded per owning cell once (the sums are linear in the facet
 // terms), both sums then run in parallel over cells, and the force is gathered per
 // particle through the transposed rows, so no two threads write one particle.
@@ -31,23 +33,30 @@ namespace rkpm::sim {
 
 class VolumeConstraint final : public Term {
  public:
-  VolumeConstraint(Body& body, std::uint32_t surface_bit, double bulk, double target);
+  VolumeConstraint(Body& body, std::uint32_t surface_bit, double bulk, double target,
+                   const par::Comm& comm = par::Comm::self());
   std::string name() const override { return "volume_constraint"; }
   void add_forces(World&) override;
   double stored_energy(const World&) const override;
   void report(const World&, io::Json&) const override;
   std::vector<std::string> history_columns() const override { return {"enclosed_volume_ratio", "enclosed_pressure"}; }
   std::string history_values(const World&) const override;
+  bool distributed() const override { return true; }
 
   double volume() const { return volume_; }            // [m^3] at the last force evaluation
   double initial_volume() const { return initial_; }  // V0 [m^3]
   double pressure() const { return pressure_; }        // [Pa]
 
  private:
-  // The signed volume at the current d and F (also stores each row's cofactor).
+  // The signed volume at the current d and F (also stores each row's cofactor), summed
+  // over the ranks.
   double measure_signed_volume();
+  bool owns_row(std::size_t r) const;  // the row's cell is this rank's
+  void check_ghosts() const;
 
   Body& body_;
+  const par::Comm& comm_;
+  std::vector<Vec3> ghost_push_;     // distributed: this rank's force on every particle, before the push
   // The facets on the surface, folded per owning cell L (one row each), so that a step
   // reads each (cell, particle) pair once instead of once per facet:
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.

@@ -1,0 +1,157 @@
+#!/usr/bin/env bash
+# Distributed-run study (docs/distributed.md): weak and strong scaling of a clamped
+# Mooney-Rivlin block under a body force (the sag example's physics, dynamic with
+# damping) on 1 and 2 ranks of this machine, one thread per rank; the ghost fraction
+# and the doubles each force evaluation exchanges, from summary.json; and a model of
+# a step on 64 ranks x 1e6 particles built from these measured inputs.
+#
+# Time per step is measured as the difference of two runs of S1 and S2 steps
+# (wall time from summary.json), so the set-up cancels; each figure is the median of
+# REPEATS such differences. Writes OUT/distributed.csv, OUT/distributed.md (the table
+# and the model) and OUT/distributed-scaling.png.
+# Usage: bash scripts/distributed-study.sh [BUILD_DIR] [OUT_DIR]
+#   environment: RKPM_CELLS (default 24: the 1-rank block is 25 x 25 x 25 particles),
+#                RKPM_REPEATS (default 3), RKPM_STEPS (default "40 240").
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+out=${2:-$here/docs/figures}
+cells=${RKPM_CELLS:-24}
+repeats=${RKPM_REPEATS:-3}
+read -r s1 s2 <<<"${RKPM_STEPS:-40 240}"
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+command -v gnuplot >/dev/null || { echo "distributed-study.sh: gnuplot is required for the plot" >&2; exit 1; }
+command -v mpirun >/dev/null || { echo "distributed-study.sh: mpirun is required (scripts/install-deps.sh)" >&2; exit 1; }
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --target rkpm -j"$(nproc)" >/dev/null
+rkpm=$build/src/app/rkpm
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
+git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
+export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=active
+
+# scene NX: the block with NX x cells x cells cells, spacing 0.4 um.
+scene() {
+  local nx=$1 file=$scratch/block_$1.toml
+  cat >"$file" <<EOF
+[scene]
+name = "distributed_block"
+[integrator]
+mode = "dynamic"
+t_end = 1.0
+damping = 2e4
+max_steps = 100000000
+[output]
+every = 1.0
+[[body]]
+name = "block"
+density = 1000.0
+[body.cloud]
+generator = "block"
+size = [$(awk -v n="$nx" 'BEGIN { printf "%.6g", 0.4e-6 * n }'), $(awk -v n="$cells" 'BEGIN { printf "%.6g", 0.4e-6 * n }'), $(awk -v n="$cells" 'BEGIN { printf "%.6g", 0.4e-6 * n }')]
+cells = [$nx, $cells, $cells]
+[body.material]
+model = "mooney_rivlin"
+c1 = 2.126e3
+c2 = 1.7e2
+lambda = 1.7e5
+[[body.boundary]]
+surface = "zmin"
+type = "fixed"
+[[term]]
+type = "body_force"
+body = "block"
+acceleration = [0.0, 0.0, -2e5]
+EOF
+  echo "$file"
+}
+
+# run RANKS SCENE STEPS DIR: one run; prints its wall time.
+run() {
+  local ranks=$1 file=$2 steps=$3 dir=$4
+  rm -rf "$dir"
+  if [ "$ranks" = 1 ]; then
+    "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --quiet >/dev/null
+  else
+    mpirun --allow-run-as-root --oversubscribe -np "$ranks" -x OMP_NUM_THREADS -x OMP_WAIT_POLICY \
+      "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --quiet >/dev/null
+  fi
+  sed -n 's/^ *"wall_time": *\([0-9.e+-]*\).*/\1/p' "$dir/summary.json"
+}
+
+median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : v[NR / 2 + 1] }'; }
+
+# measure CASE RANKS NX: median step time and set-up time; ghosts from the last run.
+csv=$out/distributed.csv
+echo "case,ranks,particles,particles_per_rank,step_s,setup_s,ghosts_max,ghost_fraction,doubles_per_force_evaluation_max" >"$csv"
+measure() {
+  local name=$1 ranks=$2 nx=$3 file steps=() setups=() dir=$scratch/run
+  file=$(scene "$nx")
+  for ((k = 0; k < repeats; k++)); do
+    local w1 w2
+    w1=$(run "$ranks" "$file" "$s1" "$dir")
+    w2=$(run "$ranks" "$file" "$s2" "$dir")
+    steps+=("$(awk -v a="$w1" -v b="$w2" -v s="$s1" -v t="$s2" 'BEGIN { printf "%.6g", (b - a) / (t - s) }')")
+    setups+=("$(awk -v a="$w1" -v b="$w2" -v s="$s1" -v t="$s2" 'BEGIN { printf "%.6g", a - s * (b - a) / (t - s) }')")
+  done
+  local step setup particles ghosts
+  step=$(printf '%s\n' "${steps[@]}" | median)
+  setup=$(printf '%s\n' "${setups[@]}" | median)
+  particles=$(( (nx + 1) * (cells + 1) * (cells + 1) ))
+  ghosts=0
+  if [ "$ranks" -gt 1 ]; then
+    ghosts=$(tr -d ' \n' <"$dir/summary.json" | sed -n 's/.*"ghosts":\[\([0-9,]*\)\].*/\1/p' | tr ',' '\n' | sort -n | tail -1)
+  fi
+  awk -v c="$name" -v r="$ranks" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" 'BEGIN {
+    printf "%s,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, n, n / r, st, su, g, g / (n / r), 6 * g }' >>"$csv"
+  echo "distributed-study: $name on $ranks rank(s), $particles particles: $step s per step, set-up $setup s"
+}
+
+load=$(cut -d' ' -f1-3 /proc/loadavg)
+measure weak 1 "$cells"
+measure weak 2 $((2 * cells + 1))
+measure strong 1 $((2 * cells + 1))
+measure strong 2 $((2 * cells + 1))
+
+md=$out/distributed.md
+awk -F, -v rev="$revision" -v load="$load" -v reps="$repeats" -v s1="$s1" -v s2="$s2" -v cores="$(nproc)" '
+NR == 1 { next }
+{ c[NR] = $1; r[NR] = $2; n[NR] = $3; npr[NR] = $4; st[NR] = $5; su[NR] = $6; g[NR] = $7; gf[NR] = $8; d[NR] = $9; last = NR }
+END {
+  printf "Measured by `bash scripts/distributed-study.sh` at %s on %d cores, one thread per rank, load average before the runs %s; each time the median of %d differences of %d- and %d-step runs.\n\n", rev, cores, load, reps, s1, s2
+  print "| case | ranks | particles | per rank | time per step [ms] | set-up [s] | ghosts (largest rank) | ghost fraction | doubles exchanged per force evaluation |"
+  print "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
+  for (i = 2; i <= last; i++)
+    printf "| %s | %d | %d | %d | %.2f | %.2f | %d | %.3f | %d |\n", c[i], r[i], n[i], npr[i], 1000 * st[i], su[i], g[i], gf[i], d[i]
+  weak = st[2] / st[3]; strong = st[4] / st[5]
+  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%**. Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%).\n", 100 * weak, n[4], strong, 50 * strong
+  # The model: a step on P ranks of m particles each costs m t_c (the measured
+  # one-rank time per particle-step) plus the ghost exchange (two messages to each
+  # neighbour: displacements in, forces out) plus the collective reductions.
+  tc = st[2] / n[2]
+  g0 = gf[3]; m0 = npr[3]; m = 1e6; P = 64
+  gm = g0 * (m0 / m) ^ (1.0 / 3.0)           # ghost fraction ~ surface / volume of a part
+  bytes = 2 * 3 * 8 * gm * m                 # per step, in and out
+  alpha = 2e-6; beta = 1.0 / 10e9; nb = 12; reductions = 12
+  comm = 2 * nb * alpha + bytes * beta + reductions * alpha * log(P) / log(2)
+  compute = tc * m
+  printf "\n**Model, 64 ranks x 1e6 particles** (inputs measured above except the network): compute %.3f s per step (%.3g s per particle-step, measured on one rank); ghost fraction %.3f (measured %.3f at %d particles per rank, scaled as m^(-1/3)); %.0f MB exchanged per rank per step; with an assumed network of 2 us latency, 10 GB/s per rank, 12 neighbours and 12 reductions of log2(64) stages per step: communication %.4f s, **parallel efficiency %.1f %%** if the exchange does not overlap the compute.\n", compute, tc, gm, g0, m0, bytes / 1e6, comm, 100 * compute / (compute + comm)
+}' "$csv" >"$md"
+cat "$md"
+
+gnuplot <<EOF
+set terminal pngcairo size 800,500
+set output "$out/distributed-scaling.png"
+set title "Time per step, one thread per rank (scripts/distributed-study.sh)"
+set xlabel "ranks"
+set ylabel "time per step [ms]"
+set xrange [0.5:2.5]
+set xtics 1
+set key top left
+set datafile separator ","
+plot "< awk -F, '\$1==\"weak\"' $csv" using 2:(1000*\$5) with linespoints title "weak: $(( (cells + 1) ** 3 )) particles per rank", \
+     "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$5) with linespoints title "strong: fixed total"
+EOF
+echo "distributed-study: wrote $csv, $md and $out/distributed-scaling.png"
