@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Distributed-run study (docs/distributed.md): weak and strong scaling of a clamped
 # Mooney-Rivlin block under a body force (the sag example's physics, dynamic with
-# damping) on 1 and 2 ranks of this machine, one thread per rank; the ghost fraction
+# damping) on 1 and 2 ranks of this machine, one thread per rank, and the strong case
+# again as one rank with 2 threads (the same cores without MPI); the ghost fraction
 # and the doubles each force evaluation exchanges, from summary.json; and a model of
 # a step on 64 ranks x 1e6 particles built from these measured inputs.
 #
 # Time per step is measured as the difference of two runs of S1 and S2 steps
 # (wall time from summary.json), so the set-up cancels; each figure is the median of
-# REPEATS such differences. Writes OUT/distributed.csv, OUT/distributed.md (the table
-# and the model) and OUT/distributed-scaling.png.
+# REPEATS such differences. Writes OUT/distributed.csv, OUT/distributed-scaling.png and
+# the table with the model: the generated part of docs/distributed.md with the default
+# OUT (docs/figures), otherwise OUT/distributed.md.
 # Usage: bash scripts/distributed-study.sh [BUILD_DIR] [OUT_DIR]
 #   environment: RKPM_CELLS (default 24: the 1-rank block is 25 x 25 x 25 particles),
 #                RKPM_REPEATS (default 3), RKPM_STEPS (default "40 240").
@@ -30,6 +32,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
 git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
+cores=$(nproc)  # before OMP_NUM_THREADS is set: nproc honours it
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=active
 
 # scene NX: the block with NX x cells x cells cells, spacing 0.4 um.
@@ -68,31 +71,31 @@ EOF
   echo "$file"
 }
 
-# run RANKS SCENE STEPS DIR: one run; prints its wall time.
+# run RANKS THREADS SCENE STEPS DIR: one run; prints its wall time.
 run() {
-  local ranks=$1 file=$2 steps=$3 dir=$4
+  local ranks=$1 threads=$2 file=$3 steps=$4 dir=$5
   rm -rf "$dir"
   if [ "$ranks" = 1 ]; then
-    "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --quiet >/dev/null
+    "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --threads "$threads" --quiet 2>>"$scratch/runs.log" >/dev/null
   else
     mpirun --allow-run-as-root --oversubscribe -np "$ranks" -x OMP_NUM_THREADS -x OMP_WAIT_POLICY \
-      "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --quiet >/dev/null
+      "$rkpm" run "$file" --out "$dir" --max-steps "$steps" --threads "$threads" --quiet 2>>"$scratch/runs.log" >/dev/null
   fi
   sed -n 's/^ *"wall_time": *\([0-9.e+-]*\).*/\1/p' "$dir/summary.json"
 }
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : v[NR / 2 + 1] }'; }
 
-# measure CASE RANKS NX: median step time and set-up time; ghosts from the last run.
+# measure CASE RANKS THREADS NX: median step time and set-up time; ghosts from the last run.
 csv=$out/distributed.csv
-echo "case,ranks,particles,particles_per_rank,step_s,setup_s,ghosts_max,ghost_fraction,doubles_per_force_evaluation_max" >"$csv"
+echo "case,ranks,threads,particles,particles_per_rank,step_s,setup_s,ghosts_max,ghost_fraction,doubles_per_force_evaluation_max" >"$csv"
 measure() {
-  local name=$1 ranks=$2 nx=$3 file steps=() setups=() dir=$scratch/run
+  local name=$1 ranks=$2 threads=$3 nx=$4 file steps=() setups=() dir=$scratch/run
   file=$(scene "$nx")
   for ((k = 0; k < repeats; k++)); do
     local w1 w2
-    w1=$(run "$ranks" "$file" "$s1" "$dir")
-    w2=$(run "$ranks" "$file" "$s2" "$dir")
+    w1=$(run "$ranks" "$threads" "$file" "$s1" "$dir")
+    w2=$(run "$ranks" "$threads" "$file" "$s2" "$dir")
     steps+=("$(awk -v a="$w1" -v b="$w2" -v s="$s1" -v t="$s2" 'BEGIN { printf "%.6g", (b - a) / (t - s) }')")
     setups+=("$(awk -v a="$w1" -v b="$w2" -v s="$s1" -v t="$s2" 'BEGIN { printf "%.6g", a - s * (b - a) / (t - s) }')")
   done
@@ -104,29 +107,32 @@ measure() {
   if [ "$ranks" -gt 1 ]; then
     ghosts=$(tr -d ' \n' <"$dir/summary.json" | sed -n 's/.*"ghosts":\[\([0-9,]*\)\].*/\1/p' | tr ',' '\n' | sort -n | tail -1)
   fi
-  awk -v c="$name" -v r="$ranks" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" 'BEGIN {
-    printf "%s,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, n, n / r, st, su, g, g / (n / r), 6 * g }' >>"$csv"
-  echo "distributed-study: $name on $ranks rank(s), $particles particles: $step s per step, set-up $setup s"
+  awk -v c="$name" -v r="$ranks" -v t="$threads" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" 'BEGIN {
+    printf "%s,%d,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, t, n, n / r, st, su, g, g / (n / r), 6 * g }' >>"$csv"
+  echo "distributed-study: $name on $ranks rank(s) x $threads thread(s), $particles particles: $step s per step, set-up $setup s"
 }
 
 load=$(cut -d' ' -f1-3 /proc/loadavg)
-measure weak 1 "$cells"
-measure weak 2 $((2 * cells + 1))
-measure strong 1 $((2 * cells + 1))
-measure strong 2 $((2 * cells + 1))
+measure weak 1 1 "$cells"
+measure weak 2 1 $((2 * cells + 1))
+measure strong 1 1 $((2 * cells + 1))
+measure strong 2 1 $((2 * cells + 1))
+measure threads 1 2 $((2 * cells + 1))
 
+# The table and the model: into docs/distributed.md with the default OUT_DIR, else OUT_DIR/distributed.md.
 md=$out/distributed.md
-awk -F, -v rev="$revision" -v load="$load" -v reps="$repeats" -v s1="$s1" -v s2="$s2" -v cores="$(nproc)" '
+[ "$out" = "$here/docs/figures" ] && md=$scratch/distributed.md
+awk -F, -v rev="$revision" -v load="$load" -v reps="$repeats" -v s1="$s1" -v s2="$s2" -v cores="$cores" '
 NR == 1 { next }
-{ c[NR] = $1; r[NR] = $2; n[NR] = $3; npr[NR] = $4; st[NR] = $5; su[NR] = $6; g[NR] = $7; gf[NR] = $8; d[NR] = $9; last = NR }
+{ c[NR] = $1; r[NR] = $2; th[NR] = $3; n[NR] = $4; npr[NR] = $5; st[NR] = $6; su[NR] = $7; g[NR] = $8; gf[NR] = $9; d[NR] = $10; last = NR }
 END {
-  printf "Measured by `bash scripts/distributed-study.sh` at %s on %d cores, one thread per rank, load average before the runs %s; each time the median of %d differences of %d- and %d-step runs.\n\n", rev, cores, load, reps, s1, s2
-  print "| case | ranks | particles | per rank | time per step [ms] | set-up [s] | ghosts (largest rank) | ghost fraction | doubles exchanged per force evaluation |"
+  printf "Measured by `bash scripts/distributed-study.sh` at %s on %d cores, load average before the runs %s; each time the median of %d differences of %d- and %d-step runs (the set-up cancels).\n\n", rev, cores, load, reps, s1, s2
+  print "| case | ranks x threads | particles | per rank | time per step [ms] | set-up [s] | ghosts (largest rank) | ghost fraction | doubles exchanged per force evaluation |"
   print "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
   for (i = 2; i <= last; i++)
-    printf "| %s | %d | %d | %d | %.2f | %.2f | %d | %.3f | %d |\n", c[i], r[i], n[i], npr[i], 1000 * st[i], su[i], g[i], gf[i], d[i]
+    printf "| %s | %d x %d | %d | %d | %.2f | %.2f | %d | %.3f | %d |\n", c[i], r[i], th[i], n[i], npr[i], 1000 * st[i], su[i], g[i], gf[i], d[i]
   weak = st[2] / st[3]; strong = st[4] / st[5]
-  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%**. Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%).\n", 100 * weak, n[4], strong, 50 * strong
+  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%**. Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed: what the weak case loses is the two cores sharing the memory bandwidth the operators stream, not the exchange.\n", 100 * weak, n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
   # neighbour: displacements in, forces out) plus the collective reductions.
@@ -137,7 +143,8 @@ END {
   alpha = 2e-6; beta = 1.0 / 10e9; nb = 12; reductions = 12
   comm = 2 * nb * alpha + bytes * beta + reductions * alpha * log(P) / log(2)
   compute = tc * m
-  printf "\n**Model, 64 ranks x 1e6 particles** (inputs measured above except the network): compute %.3f s per step (%.3g s per particle-step, measured on one rank); ghost fraction %.3f (measured %.3f at %d particles per rank, scaled as m^(-1/3)); %.0f MB exchanged per rank per step; with an assumed network of 2 us latency, 10 GB/s per rank, 12 neighbours and 12 reductions of log2(64) stages per step: communication %.4f s, **parallel efficiency %.1f %%** if the exchange does not overlap the compute.\n", compute, tc, gm, g0, m0, bytes / 1e6, comm, 100 * compute / (compute + comm)
+  eff = compute / (compute + comm)
+  printf "\n**Model, 64 ranks x 1e6 particles** (inputs measured above except the network): compute %.3f s per step (%.3g s per particle-step, measured with one rank alone on the machine); ghost fraction %.3f (measured %.3f at %d particles per rank, scaled as m^(-1/3)); %.1f MB exchanged per rank per step; with an assumed network of 2 us latency, 10 GB/s per rank, 12 neighbours and 12 reductions of log2(64) stages per step: communication %.2g s, so the exchange costs %.2f %% of a step if it does not overlap the compute. Ranks that share a node also share its memory bandwidth: with the loss measured here (weak efficiency %.0f %%) the expected efficiency is **%.0f %%**, the same as the node'\''s threads would reach.\n", compute, tc, gm, g0, m0, bytes / 1e6, comm, 100 * (1 - eff), 100 * weak, 100 * eff * weak
 }' "$csv" >"$md"
 cat "$md"
 
@@ -151,7 +158,17 @@ set xrange [0.5:2.5]
 set xtics 1
 set key top left
 set datafile separator ","
-plot "< awk -F, '\$1==\"weak\"' $csv" using 2:(1000*\$5) with linespoints title "weak: $(( (cells + 1) ** 3 )) particles per rank", \
-     "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$5) with linespoints title "strong: fixed total"
+plot "< awk -F, '\$1==\"weak\"' $csv" using 2:(1000*\$6) with linespoints title "weak: $(( (cells + 1) ** 3 )) particles per rank", \
+     "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$6) with linespoints title "strong: fixed total", \\
+     "< awk -F, '\$1==\"threads\"' $csv" using (2):(1000*\$6) with points pt 7 ps 1.5 title "1 rank x 2 threads, strong size"
 EOF
-echo "distributed-study: wrote $csv, $md and $out/distributed-scaling.png"
+# With the default OUT_DIR the table also replaces the generated part of docs/distributed.md.
+doc=$here/docs/distributed.md
+if [ "$out" = "$here/docs/figures" ]; then
+  awk -v md="$md" '
+    /<!-- BEGIN GENERATED/ { print; print ""; while ((getline line < md) > 0) print line; print ""; print "![time per step](figures/distributed-scaling.png)"; print ""; skip = 1; next }
+    /<!-- END GENERATED/ { skip = 0 }
+    !skip { print }' "$doc" >"$scratch/doc.md" && cp "$scratch/doc.md" "$doc"
+  echo "distributed-study: updated $doc"
+fi
+echo "distributed-study: wrote $csv and $out/distributed-scaling.png"
