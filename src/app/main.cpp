@@ -100,23 +100,28 @@ int main(int argc, char** argv) {
   try {
     if (!memory_limit.empty()) options.limits.memory_bytes = rkpm::sim::parse_byte_size(memory_limit);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    if (rkpm::par::Comm::world().root()) std::cerr << "error: " << e.what() << "\n";
     return rkpm::sim::kBadInput;
   }
   if (*check || dry_run) {
-    // The estimate, then the verdict a run would give: 0 when it fits, 2 when it would be refused.
+    // The estimate, then the verdict a run would give: 0 when it fits, 2 when it would be
+    // refused. Under mpirun every rank finds the same and rank 0 prints it.
+    const bool speaks = rkpm::par::Comm::world().root();
+    std::ostream silent(nullptr);
+    std::ostream& out = speaks ? std::cout : silent;
+    std::ostream& err = speaks ? std::cerr : silent;
     const auto estimate = rkpm::sim::estimate_run(scene);
-    rkpm::sim::print_estimate(std::cout, scene, estimate, options.limits, options.out_dir);
+    rkpm::sim::print_estimate(out, scene, estimate, options.limits, options.out_dir);
     try {
       // Without a set-up the step is unknown: the disk must hold at least the first and last frames.
       rkpm::sim::check_memory(estimate, options.limits);
       rkpm::sim::check_disk(scene, estimate, rkpm::sim::frames_expected(scene, estimate, std::nullopt), options.limits,
                             options.out_dir);
     } catch (const rkpm::sim::PreflightError& e) {
-      std::cerr << "error: " << e.what() << "\n";
+      err << "error: " << e.what() << "\n";
       return rkpm::sim::kBadInput;
     }
-    std::cout << "fits: a run of this scene is not refused for its size\n";
+    out << "fits: a run of this scene is not refused for its size\n";
     return rkpm::sim::kSuccess;
   }
   try {
