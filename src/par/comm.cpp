@@ -140,6 +140,17 @@ void Comm::abort(int code) const {
   std::exit(code);
 }
 
+std::vector<Vec3> gather_owned(const Comm& comm, const std::vector<Vec3>& field, Index begin, Index end) {
+  if (!comm.parallel()) return field;
+  std::vector<double> mine;
+  mine.reserve(3 * static_cast<std::size_t>(end - begin));
+  for (Index i = begin; i < end; ++i) mine.insert(mine.end(), field[i].data(), field[i].data() + 3);
+  const std::vector<double> all = comm.gather(mine);
+  std::vector<Vec3> whole(all.size() / 3);
+  for (std::size_t i = 0; i < whole.size(); ++i) whole[i] = Vec3(all[3 * i], all[3 * i + 1], all[3 * i + 2]);
+  return whole;
+}
+
 bool Session::launched_by_mpi() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
     if (std::getenv(name) != nullptr) return true;

@@ -338,15 +338,12 @@ void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
     throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the "
                                  "scene as one process (without mpirun). Distributed: every material's internal "
                                  "force and LCE director, essential boundary conditions, body_force, "
-                                 "volume_constraint, FIRE and explicit dynamics",
+                                 "volume_constraint, wall_contact, FIRE (with nested levels) and explicit dynamics, the shape report",
                                  p.file(), line, what, comm.size()));
   };
   const auto& in = scene.integrator;
-  if (!in.reals("nested_levels").empty()) refuse(in, in.line("nested_levels"), "[integrator] nested_levels");
   if (in.flag("mass_scaling")) refuse(in, in.line("mass_scaling"), "[integrator] mass_scaling");
   if (in.choice("stable_step") == "measured") refuse(in, in.line("stable_step"), "[integrator] stable_step = \"measured\"");
-  if (!scene.output.text("shape_report").empty())
-    refuse(scene.output, scene.output.line("shape_report"), "[output] shape_report");
 }
 
 void check_distributable_terms(const scene::Scene& scene, const World& world) {
@@ -356,7 +353,7 @@ void check_distributable_terms(const scene::Scene& scene, const World& world) {
       const auto& term = scene.terms[k];
       throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
                                    "has {}); run the scene as one process (without mpirun). Distributed terms: "
-                                   "body_force, volume_constraint",
+                                   "body_force, volume_constraint, wall_contact",
                                    term.params.file(), term.params.table_line(), term.type(), world.comm->size()));
     }
 }

@@ -11,11 +11,15 @@
 namespace rkpm::sim {
 
 namespace {
-std::vector<Vec3> physical_positions(const Body& body) {
+// X + u(X) of every particle. Distributed: each rank computes its own particles' (it
+// holds their interpolation rows) and every rank gathers all of them, in rank order,
+// which is the particle order (each rank owns one range). Collective.
+std::vector<Vec3> physical_positions(const Body& body, const par::Comm& comm) {
   std::vector<Vec3> u;
   physical_displacement(body, u);
   for (std::size_t i = 0; i < u.size(); ++i) u[i] += body.cloud.X[i];
-  return u;
+  if (!body.distributed()) return u;
+  return par::gather_owned(comm, u, body.owned_begin(), body.owned_end());
 }
 }  // namespace
 
@@ -59,28 +63,30 @@ void History::record(const World& world, Integrator& integrator) {
   const auto& e = integrator.measure_energy();
   std::string term_values;  // on every rank: a distributed term's values are collective
   for (const auto& t : world.terms) term_values += t->history_values(world);
+  // The whole shape report is a pass over the surface particles: cheap next to a step.
+  // Fields that cannot be measured in this state stay empty.
+  std::string shape_values;
+  if (shape_body_) {
+    try {
+      const ShapeReport s = final_shape(*shape_body_, *world.comm);
+      shape_values = fmt::format(",{:.10g},{:.10g},{:.6g},{:.6g},", s.volume, s.area, s.reduced_volume, s.h_min / s.h_max);
+      if (s.has_inner_gap) shape_values += fmt::format("{:.6g}", s.inner_gap_min);
+    } catch (const std::runtime_error&) {
+      shape_values = ",,,,";
+    }
+  }
   if (!writes_) return;
   out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
                       world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
                       e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
-  out_ << term_values;
-  if (shape_body_) {
-    // The whole shape report is a pass over the surface particles: cheap next to a step.
-    // Fields that cannot be measured in this state stay empty.
-    try {
-      const ShapeReport s = final_shape(*shape_body_);
-      out_ << fmt::format(",{:.10g},{:.10g},{:.6g},{:.6g},", s.volume, s.area, s.reduced_volume, s.h_min / s.h_max);
-      if (s.has_inner_gap) out_ << fmt::format("{:.6g}", s.inner_gap_min);
-    } catch (const std::runtime_error&) {
-      out_ << ",,,,";
-    }
-  }
-  out_ << "\n";
+  out_ << term_values << shape_values << "\n";
   out_.flush();
   if (!out_) throw std::runtime_error(fmt::format("failed writing '{}' (disk full?)", path_.string()));
 }
 
-ShapeReport final_shape(const Body& body) { return measure_shape(body.cloud, physical_positions(body), "outer"); }
+ShapeReport final_shape(const Body& body, const par::Comm& comm) {
+  return measure_shape(body.cloud, physical_positions(body, comm), "outer");
+}
 
 void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv, io::Json& summary) {
   io::Json j = io::Json::object();

@@ -14,24 +14,28 @@ namespace rkpm::sim {
 
 namespace {
 
-// One body's state at the other body's particles (see carry_state).
-void carry_body(const Body& from, Body& to) {
-  const auto n = static_cast<Index>(to.size());
+// One body's state at the other body's particles (see carry_state). Distributed: every
+// rank gathers the whole coarse state (a coarse level is small) and sets its own fine
+// particles; the ghosts' values follow at the next force evaluation.
+void carry_body(const par::Comm& comm, const Body& from, Body& to) {
   const bool director = from.director.has_value() && to.director.has_value();
+  const std::vector<Vec3> from_d = par::gather_owned(comm, from.d, from.owned_begin(), from.owned_end());
+  const std::vector<Vec3> from_h =
+      director ? par::gather_owned(comm, from.director->h, from.owned_begin(), from.owned_end()) : std::vector<Vec3>{};
   std::atomic<bool> failed{false};
 #pragma omp parallel
   {
     rk::ShapeValues sv;
 #pragma omp for schedule(dynamic, 256)
-    for (Index J = 0; J < n; ++J) {
+    for (Index J = to.owned_begin(); J < to.owned_end(); ++J) {
       if (!from.rk->evaluate(to.cloud.X[J], sv, false)) {
         failed = true;
         continue;
       }
       Vec3 u = Vec3::Zero(), h = Vec3::Zero();
       for (std::size_t k = 0; k < sv.ids.size(); ++k) {
-        u += sv.psi[k] * from.d[sv.ids[k]];
-        if (director) h += sv.psi[k] * from.director->h[sv.ids[k]];
+        u += sv.psi[k] * from_d[sv.ids[k]];
+        if (director) h += sv.psi[k] * from_h[sv.ids[k]];
       }
       to.d[J] = u;
       to.v[J] = Vec3::Zero();
@@ -40,9 +44,11 @@ void carry_body(const Body& from, Body& to) {
       if (director && h.norm() > 1e-3) to.director->h[J] = h.normalized();
     }
   }
-  if (failed) {
+  std::fill(to.v.begin(), to.v.end(), Vec3::Zero());
+  // Every rank learns of a failure on any (the diagnosis is found again on each).
+  if (comm.max(failed ? 1.0 : 0.0) > 0.0) {
     rk::ShapeValues sv;
-    for (Index J = 0; J < n; ++J) try {
+    for (Index J = 0; J < static_cast<Index>(to.size()); ++J) try {
         from.rk->evaluate_or_throw(to.cloud.X[J], sv, false,
                                    fmt::format("particle {} of the finer cloud of body '{}'", J, to.name));
       } catch (const rk::ApproximationError& e) {
@@ -60,7 +66,7 @@ void carry_body(const Body& from, Body& to) {
 void carry_state(const World& from, World& to) {
   if (from.bodies.size() != to.bodies.size())
     throw std::logic_error("carry_state: the two worlds have different body lists");
-  for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*from.bodies[b], *to.bodies[b]);
+  for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*to.comm, *from.bodies[b], *to.bodies[b]);
 }
 
 std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log) {
@@ -71,7 +77,7 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
   for (std::size_t l = 0; l < factors.size(); ++l) {
     const auto start = Clock::now();
     const scene::Scene level_scene = scene::at_resolution(scene, factors[l]);
-    std::unique_ptr<World> level = build_world(level_scene);
+    std::unique_ptr<World> level = build_world(level_scene, *world.comm);
     if (previous) carry_state(*previous, *level);
     Integrator integrator(*level, integrator_settings(level_scene));
     const std::int64_t max_steps = level_scene.integrator.integer("max_steps");

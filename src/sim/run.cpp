@@ -333,7 +333,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       json.set("kinetic_measure", integrator.kinetic_measure());
     }
     for (const auto& t : world->terms) t->report(*world, json);
-    if (shape_body) write_shape(final_shape(*shape_body), options.out_dir / "shape_profile.csv", json);
+    if (shape_body) {
+      const ShapeReport shape = final_shape(*shape_body, comm);  // collective
+      if (comm.root()) write_shape(shape, options.out_dir / "shape_profile.csv", json);
+    }
   } else {
     json.set("diagnosis", diagnosis);
     log << "error: " << diagnosis << "\n";

@@ -61,6 +61,11 @@ class Comm {
   int size_ = 1;
 };
 
+// The whole of a per-particle field on every rank, from each rank's own range
+// [begin, end): the ranges tile the particles in rank order (par/partition.hpp), so the
+// ranks' slices, concatenated in rank order, are the field in particle order. Collective.
+std::vector<Vec3> gather_owned(const Comm& comm, const std::vector<Vec3>& field, Index begin, Index end);
+
 // MPI's lifetime in a program: initialised (MPI_THREAD_FUNNELED: OpenMP threads never
 // call MPI) when an MPI launcher started the process, finalised at the end of main.
 class Session {

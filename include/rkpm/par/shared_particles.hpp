@@ -18,12 +18,16 @@ class SharedParticles {
   bool built() const { return comm_ != nullptr; }
   // field[i] = its owner's field[i], for every i of the set, on every rank.
   void update(std::vector<Vec3>& field) const;
+  // The same for values stored by position in the set (values[k] belongs to the k-th
+  // smallest id), as a term that keeps its own sorted particle list stores them.
+  void update_packed(std::vector<Vec3>& values) const;
   std::size_t size() const { return ids_.size(); }
 
  private:
   const Comm* comm_ = nullptr;
   std::vector<Index> ids_;   // sorted: the ranks' owned subsets follow one another in rank order
   std::vector<Index> mine_;  // the ids this rank owns, sorted
+  std::size_t first_mine_ = 0;  // the position of mine_[0] in ids_
   mutable std::vector<double> buffer_;
 };
 

@@ -34,15 +34,25 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f);
 template <class ForceAt>
 void add_point_forces(Body& body, const std::vector<Index>& particles, double scale, ForceAt force_at) {
   const auto& N = body.interpolation;
+  // Distributed: a rank holds the interpolation rows of its own particles only, so only
+  // their forces are transferred; what they put on ghosts goes back to the owners.
+  const bool distributed = body.distributed();
+  if (distributed) body.point_force_ghosts.assign(body.size(), Vec3::Zero());
+  std::vector<Vec3>& out = distributed ? body.point_force_ghosts : body.force;
   for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Index J = particles[i];
+    if (distributed && (J < body.owned_begin() || J >= body.owned_end())) continue;
     const Vec3& f = force_at(i);
     if (f.isZero(0.0)) continue;
-    const Index J = particles[i];
     if (N.row_offset.empty()) {
-      body.force[J] += scale * f;
+      out[J] += scale * f;
       continue;
     }
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) body.force[N.col[k]] += (scale * N.psi[k]) * f;
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) out[N.col[k]] += (scale * N.psi[k]) * f;
+  }
+  if (distributed) {
+    body.ghosts.push_add(body.point_force_ghosts);
+    for (Index I = body.owned_begin(); I < body.owned_end(); ++I) body.force[I] += body.point_force_ghosts[I];
   }
 }
 

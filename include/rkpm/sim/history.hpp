@@ -35,7 +35,8 @@ class History {
 };
 
 // The final shape of `body`'s outer surface: summary entries and shape_profile.csv.
-ShapeReport final_shape(const Body& body);
+// Distributed: collective, every rank gets the report.
+ShapeReport final_shape(const Body& body, const par::Comm& comm = par::Comm::self());
 void write_shape(const ShapeReport& shape, const std::filesystem::path& profile_csv, io::Json& summary);
 
 }  // namespace rkpm::sim

@@ -58,11 +58,20 @@ double WallContact::surface_spacing() const {
 
 bool WallContact::excluded(Index i, Index j) const { return (reference_[i] - reference_[j]).squaredNorm() < exclusion2_; }
 
-void WallContact::add_forces(World&) {
+void WallContact::add_forces(World& world) {
   const auto start = std::chrono::steady_clock::now();
   const auto n = static_cast<Index>(particles_.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) points_[i] = physical_point(body_, particles_[i]);
+  // Distributed: each rank computes the points of its own particles (it holds their
+  // interpolation rows) and gathers the others', then evaluates every pair as a single
+  // process would: the surface is small next to the body, and the pair list, the energy
+  // and the step limit are then the same on every rank. Only the transfer of the point
+  // forces to the generalized coordinates is split (add_point_forces).
+  if (body_.distributed()) {
+    if (!shared_.built()) shared_.build(*world.comm, body_.ghosts.offset(), particles_);
+    shared_.update_packed(points_);
+  }
   pairs_.update(points_, points_);  // symmetric: row i lists every j near i, i itself included
   const auto& offset = pairs_.row_offset();
   const auto& partner = pairs_.partner();

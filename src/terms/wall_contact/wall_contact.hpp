@@ -39,6 +39,7 @@ class WallContact final : public Term {
   // Gershgorin bound as for the contact term, over the pairs listed within s0 + skin.
   double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
+  bool distributed() const override { return true; }
 
   double energy() const { return energy_; }
   std::size_t active_pairs() const { return active_pairs_; }  // each pair once
@@ -56,6 +57,7 @@ class WallContact final : public Term {
   bool excluded(Index i, Index j) const;
 
   Body& body_;
+  par::SharedParticles shared_;  // distributed: every rank's surface points, on every rank
   std::string surface_;
   LennardJones lj_;  // eps = 1: the shape of w
   double pressure_, exclusion2_;
