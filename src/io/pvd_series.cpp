@@ -200,11 +200,7 @@ fs::path PvdSeries::pvd_path() const { return dir_ / (basename_ + ".pvd"); }
 fs::path PvdSeries::frame_path(int index) const { return dir_ / frame_file_name(basename_, index); }
 
 fs::path PvdSeries::write(double time, const Frame& frame) {
-  if (!std::isfinite(time)) throw NonFiniteValue(fmt::format("output frame time is {}", time));
-  if (!entries_.empty() && !(time > entries_.back().time)) {
-    throw FrameError(fmt::format("output frame time {} is not after the previous frame's time {}", time,
-                                 entries_.back().time));
-  }
+  check_next_time(time);
   validate_frame(frame);  // before any file is touched
 
   const fs::path path = frame_path(next_index_);
@@ -223,11 +219,7 @@ fs::path PvdSeries::write(double time, const Frame& frame) {
 }
 
 fs::path PvdSeries::write_piece(double time, const Frame& piece, int rank) const {
-  if (!std::isfinite(time)) throw NonFiniteValue(fmt::format("output frame time is {}", time));
-  if (!entries_.empty() && !(time > entries_.back().time)) {
-    throw FrameError(fmt::format("output frame time {} is not after the previous frame's time {}", time,
-                                 entries_.back().time));
-  }
+  check_next_time(time);
   validate_frame(piece);  // before any file is touched
   const fs::path path = dir_ / piece_file_name(basename_, next_index_, rank);
   replace_atomically(path, [&](const fs::path& tmp) { write_vtu(tmp, piece); });
@@ -248,6 +240,14 @@ fs::path PvdSeries::add_parallel_frame(double time, const Frame& piece, int rank
   }
   ++next_index_;
   return path;
+}
+
+void PvdSeries::check_next_time(double time) const {
+  if (!std::isfinite(time)) throw NonFiniteValue(fmt::format("output frame time is {}", time));
+  if (!entries_.empty() && !(time > entries_.back().time)) {
+    throw FrameError(fmt::format("output frame time {} is not after the previous frame's time {}", time,
+                                 entries_.back().time));
+  }
 }
 
 void PvdSeries::rewrite_pvd() const {

@@ -332,29 +332,34 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   return s;
 }
 
+namespace {
+// The refusal of a feature that does not run on more than one rank yet, at its line.
+[[noreturn]] void refuse_distributed(const std::string& file, int line, const std::string& what, int ranks) {
+  throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the scene as "
+                               "one process (without mpirun). Distributed: every material's internal force and LCE "
+                               "director, essential boundary conditions, FIRE (with nested levels) and explicit "
+                               "dynamics, the shape report, and the terms body_force, volume_constraint and "
+                               "wall_contact",
+                               file, line, what, ranks));
+}
+}  // namespace
+
 void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
   if (!comm.parallel()) return;
-  const auto refuse = [&](const scene::ParamSet& p, int line, const std::string& what) {
-    throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the "
-                                 "scene as one process (without mpirun). Distributed: every material's internal "
-                                 "force and LCE director, essential boundary conditions, body_force, "
-                                 "volume_constraint, wall_contact, FIRE (with nested levels) and explicit dynamics, the shape report",
-                                 p.file(), line, what, comm.size()));
-  };
   const auto& in = scene.integrator;
-  if (in.flag("mass_scaling")) refuse(in, in.line("mass_scaling"), "[integrator] mass_scaling");
-  if (in.choice("stable_step") == "measured") refuse(in, in.line("stable_step"), "[integrator] stable_step = \"measured\"");
+  if (in.flag("mass_scaling"))
+    refuse_distributed(in.file(), in.line("mass_scaling"), "[integrator] mass_scaling", comm.size());
+  if (in.choice("stable_step") == "measured")
+    refuse_distributed(in.file(), in.line("stable_step"), "[integrator] stable_step = \"measured\"", comm.size());
 }
 
 void check_distributable_terms(const scene::Scene& scene, const World& world) {
   if (!world.comm->parallel()) return;
   for (std::size_t k = 0; k < world.terms.size(); ++k)
     if (!world.terms[k]->distributed()) {
-      const auto& term = scene.terms[k];
-      throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
-                                   "has {}); run the scene as one process (without mpirun). Distributed terms: "
-                                   "body_force, volume_constraint, wall_contact",
-                                   term.params.file(), term.params.table_line(), term.type(), world.comm->size()));
+      const auto& term = scene.terms[k].params;
+      refuse_distributed(term.file(), term.table_line(), fmt::format("[[term]] type = \"{}\"", scene.terms[k].type()),
+                         world.comm->size());
     }
 }
 

@@ -68,6 +68,8 @@ class PvdSeries {
   PvdSeries(std::filesystem::path dir, std::string basename, std::vector<PvdEntry> entries, int next_index,
             bool owner);
   void rewrite_pvd() const;
+  // Throws unless `time` is finite and later than the last frame's.
+  void check_next_time(double time) const;
 
   std::filesystem::path dir_;
   std::string basename_;

@@ -26,8 +26,8 @@ class SharedParticles {
  private:
   const Comm* comm_ = nullptr;
   std::vector<Index> ids_;   // sorted: the ranks' owned subsets follow one another in rank order
-  std::vector<Index> mine_;  // the ids this rank owns, sorted
-  std::size_t first_mine_ = 0;  // the position of mine_[0] in ids_
+  std::size_t first_mine_ = 0;  // this rank's ids are ids_[first_mine_, first_mine_ + mine_count_)
+  std::size_t mine_count_ = 0;
   mutable std::vector<double> buffer_;
 };
 
