@@ -71,6 +71,21 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     }
   };
 
+  // The cells of one body: the elements whose lowest node this rank owns (every element
+  // on one rank), their nodes numbered by point(J).
+  const auto add_cells = [&](const Body& b, const auto& point) {
+    if (cells != CellOutput::Mesh) return;
+    const auto& mesh = b.cloud.mesh;
+    for (int e = 0; e < mesh.n_elements(); ++e) {
+      const std::int32_t* nodes = mesh.element_nodes(e);
+      const Index lowest = *std::min_element(nodes, nodes + mesh.element_size(e));
+      if (lowest < b.owned_begin() || lowest >= b.owned_end()) continue;
+      frame.cells.types.push_back(static_cast<std::uint8_t>(mesh.type[e]));
+      for (int k = 0; k < mesh.element_size(e); ++k) frame.cells.connectivity.push_back(point(nodes[k]));
+      frame.cells.offsets.push_back(static_cast<std::int64_t>(frame.cells.connectivity.size()));
+    }
+  };
+
   std::vector<Vec3> ghosted_d, ghosted_v;
   std::vector<double> records;
   std::vector<std::int64_t> point_of;  // distributed: particle -> point of this frame, or -1
@@ -79,19 +94,12 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
     const Index begin = b.owned_begin(), end = b.owned_end();
-    const auto& mesh = b.cloud.mesh;
     if (!b.distributed()) {
       for (Index J = 0; J < end; ++J) {
         point_record(b, J, b.d, b.v, record);
         append(record);
       }
-      if (cells == CellOutput::Mesh)
-        for (int e = 0; e < mesh.n_elements(); ++e) {
-          frame.cells.types.push_back(static_cast<std::uint8_t>(mesh.type[e]));
-          for (int k = 0; k < mesh.element_size(e); ++k)
-            frame.cells.connectivity.push_back(offset + mesh.element_nodes(e)[k]);
-          frame.cells.offsets.push_back(static_cast<std::int64_t>(frame.cells.connectivity.size()));
-        }
+      add_cells(b, [&](Index J) { return offset + J; });
       offset += end;
       continue;
     }
@@ -116,15 +124,7 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
         append(records.data() + kRecord * J);
         point_of[static_cast<std::size_t>(J)] = next++;
       }
-    if (cells == CellOutput::Mesh)
-      for (int e = 0; e < mesh.n_elements(); ++e) {
-        const std::int32_t* nodes = mesh.element_nodes(e);
-        const Index lowest = *std::min_element(nodes, nodes + mesh.element_size(e));
-        if (lowest < begin || lowest >= end) continue;
-        frame.cells.types.push_back(static_cast<std::uint8_t>(mesh.type[e]));
-        for (int k = 0; k < mesh.element_size(e); ++k) frame.cells.connectivity.push_back(point_of[nodes[k]]);
-        frame.cells.offsets.push_back(static_cast<std::int64_t>(frame.cells.connectivity.size()));
-      }
+    add_cells(b, [&](Index J) { return point_of[static_cast<std::size_t>(J)]; });
     offset = next;
   }
   if (cells == CellOutput::Points) frame.cells = io::vertex_cells(positions.size());
