@@ -7,6 +7,7 @@
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/run.hpp"
+#include "rkpm/sim/compare_command.hpp"
 #include "rkpm/sim/shape_command.hpp"
 
 #include <CLI/CLI.hpp>
@@ -54,6 +55,13 @@ int main(int argc, char** argv) {
   shape->add_option("--body", shape_options.body, "Shell body to measure (default: [output] shape_report)");
   shape->add_option("--csv", shape_csv, "Profile CSV to write (default: shape_profile.csv beside the frame)");
 
+  auto* compare = app.add_subcommand(
+      "compare", "How far apart two runs of a scene end: the largest particle distance between their frames");
+  rkpm::sim::CompareCommandOptions compare_options;
+  compare->add_option("reference", compare_options.reference, "A .vtu/.pvtu frame, or a run's output directory")
+      ->required();
+  compare->add_option("other", compare_options.other, "The frame (or run directory) to compare with it")->required();
+
   auto* check = app.add_subcommand(
       "check", "Validate a scene and print what it will cost: particles, operator entries, memory, output size");
   check->add_option("scene", scene_path, "Scene file (TOML)")->required();
@@ -81,6 +89,8 @@ int main(int argc, char** argv) {
     shape_options.csv = shape_csv;
     return rkpm::sim::run_shape_command(shape_options, std::cout, std::cerr);
   }
+
+  if (*compare) return rkpm::sim::run_compare_command(compare_options, std::cout, std::cerr);
 
   rkpm::scene::Scene scene;
   try {

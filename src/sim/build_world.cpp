@@ -28,10 +28,17 @@ Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
 
-Vec3 centroid(const particles::Cloud& c) {
+// The volume-weighted centre, summed in the one-rank numbering: the same bits for any
+// rank count (the director's orientation test and the initial stretch read it, and a
+// round-off difference flips the director of a particle at the centre).
+Vec3 centroid(const Body& body) {
+  const auto& c = body.cloud;
+  std::vector<std::size_t> order(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i)
+    order[body.original_id.empty() ? i : static_cast<std::size_t>(body.original_id[i])] = i;
   Vec3 sum = Vec3::Zero();
   double v = 0.0;
-  for (std::size_t i = 0; i < c.size(); ++i) {
+  for (std::size_t i : order) {
     sum += c.volume[i] * c.X[i];
     v += c.volume[i];
   }
@@ -50,7 +57,7 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
   DirectorField dir;
   const std::size_t n = cloud.size();
   dir.h.resize(n);
-  const Vec3 centre = centroid(cloud);
+  const Vec3 centre = centroid(body);
   const std::string initial = p.choice("initial");
   if (initial == "fixed") {
     const Vec3 h = p.vec3("vector").normalized();
@@ -91,8 +98,8 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
         const auto nearest = search.nearest(cloud.X[i], found);
         Index pick = nearest.first;
         const auto one_rank_id = [&](Index b) {
-          const auto p = static_cast<std::size_t>(cloud.boundary_particles[static_cast<std::size_t>(b)]);
-          return body.original_id.empty() ? static_cast<std::int64_t>(p) : body.original_id[p];
+          const auto j = static_cast<std::size_t>(cloud.boundary_particles[static_cast<std::size_t>(b)]);
+          return body.original_id.empty() ? static_cast<std::int64_t>(j) : body.original_id[j];
         };
         for (const auto& f : found)
           if (f.second == nearest.second && one_rank_id(f.first) < one_rank_id(pick)) pick = f.first;
@@ -214,7 +221,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");
-  const Vec3 centre = centroid(cloud);
+  const Vec3 centre = centroid(*body);
   const Vec3 velocity = spec.initial.vec3("velocity");
   const double noise = spec.initial.real("random_velocity");
   SplitMix64 random(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id));
@@ -336,10 +343,9 @@ namespace {
 // The refusal of a feature that does not run on more than one rank yet, at its line.
 [[noreturn]] void refuse_distributed(const std::string& file, int line, const std::string& what, int ranks) {
   throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the scene as "
-                               "one process (without mpirun). Distributed: every material's internal force and LCE "
-                               "director, essential boundary conditions, FIRE (with nested levels) and explicit "
-                               "dynamics, the shape report, and the terms body_force, volume_constraint and "
-                               "wall_contact",
+                               "one process (without mpirun). Distributed: every material, term and report, FIRE "
+                               "(with nested levels) and explicit dynamics with the wave-speed stable step, without "
+                               "mass scaling (docs/distributed.md)",
                                file, line, what, ranks));
 }
 }  // namespace

@@ -1,8 +1,7 @@
 #include "rkpm/sim/shape_command.hpp"
 
 #include "rkpm/io/json.hpp"
-#include "rkpm/io/pvd_series.hpp"
-#include "rkpm/io/vtu_points.hpp"
+#include "rkpm/io/frame_points.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/history.hpp"
 #include "rkpm/sim/run.hpp"
@@ -13,19 +12,6 @@
 
 namespace rkpm::sim {
 
-namespace {
-
-// A run directory stands for the last frame its frames.pvd lists.
-std::filesystem::path frame_file(const std::filesystem::path& given) {
-  if (!std::filesystem::is_directory(given)) return given;
-  const auto pvd = given / "frames.pvd";
-  const auto entries = io::read_pvd(pvd);
-  if (entries.empty()) throw std::runtime_error(pvd.string() + ": lists no frame");
-  return given / entries.back().file;
-}
-
-}  // namespace
-
 int run_shape_command(const ShapeCommandOptions& options, std::ostream& out, std::ostream& log) {
   try {
     const scene::Scene scene = scene::load_scene(options.scene.string());
@@ -33,10 +19,10 @@ int run_shape_command(const ShapeCommandOptions& options, std::ostream& out, std
     if (name.empty())
       throw std::runtime_error(fmt::format("{}: [output] shape_report is not set: name the shell body with --body",
                                            options.scene.string()));
-    const auto frame = frame_file(options.frame);
-    const auto positions = io::read_vtu_points(frame);
+    const auto frame = io::frame_file(options.frame);
+    const auto positions = io::read_frame_points(frame).position;
 
-    // The frame lists the particles of all bodies in scene order.
+    // The particles of all bodies in scene order, each in its one-rank numbering.
     std::size_t offset = 0, total = 0;
     std::optional<particles::Cloud> cloud;
     for (const auto& body : scene.bodies) {

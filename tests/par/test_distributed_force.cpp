@@ -6,6 +6,7 @@
 #include "rkpm/par/comm.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/build.hpp"
+#include "rkpm/sim/world.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -67,6 +68,69 @@ c2 = 1.7e2
 lambda = 1.7e5
 )";
 
+// A cell on a substrate with every surface and contact term: the contact pairs of the
+// two bodies, surface tension on each, a follower pressure on the substrate's sides.
+const char* kCellOnSubstrate = R"(
+[scene]
+name = "distributed_terms"
+[integrator]
+mode = "dynamic"
+t_end = 1e-6
+[[body]]
+name = "cell"
+density = 1000.0
+[body.cloud]
+generator = "sphere"
+center = [0.3e-6, -0.2e-6, 3.4e-6]
+radius = 1.5e-6
+cells = 6
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+s = 2.0
+kappa = 1e-11
+[body.director]
+initial = "surface_normal"
+boundary = "normal"
+[[body]]
+name = "substrate"
+density = 1000.0
+[body.cloud]
+generator = "block"
+origin = [-3e-6, -3e-6, 0.0]
+size = [6e-6, 6e-6, 1.5e-6]
+cells = [10, 10, 3]
+[body.material]
+model = "mooney_rivlin"
+c1 = 2.126e3
+c2 = 1.7e2
+lambda = 1.7e5
+[[term]]
+type = "contact"
+bodies = ["cell", "substrate"]
+s0 = 0.5e-6
+epsilon = 3e-15
+beta = [1e18, 1e18]
+stiffness_law = "linear"
+substrate = "substrate"
+report_surface = "zmax"
+[[term]]
+type = "surface_tension"
+body = "cell"
+gamma = 1e-3
+[[term]]
+type = "surface_tension"
+body = "substrate"
+surface = "zmax"
+gamma = 1e-3
+[[term]]
+type = "surface_pressure"
+body = "substrate"
+surface = "xmin"
+pressure = 20.0
+)";
+
 std::int64_t original(const Body& b, std::size_t i) {
   return b.original_id.empty() ? static_cast<std::int64_t>(i) : b.original_id[i];
 }
@@ -79,13 +143,14 @@ Vec3 noise(std::int64_t id, std::uint64_t salt) {
 
 // A smooth finite deformation and a rough part the stabilization resists, and a
 // perturbed director: the same physical state in either numbering.
-void deform(Body& b) {
+void deform(Body& b, double amplitude = 1.0) {
   Mat3 A;
   A << 0.08, 0.03, -0.02, 0.01, -0.05, 0.04, 0.02, 0.0, 0.06;
+  A *= amplitude;
   double volume = 0.0;  // the mean spacing: the same in either numbering
   for (double v : b.cloud.volume) volume += v;
   const double h = std::cbrt(volume / static_cast<double>(b.size()));
-  for (std::size_t i = 0; i < b.size(); ++i) b.d[i] = A * b.cloud.X[i] + 0.05 * h * noise(original(b, i), 1);
+  for (std::size_t i = 0; i < b.size(); ++i) b.d[i] = A * b.cloud.X[i] + 0.05 * amplitude * h * noise(original(b, i), 1);
   update_positions(b);
   if (b.director)
     for (std::size_t i = 0; i < b.size(); ++i)
@@ -156,7 +221,75 @@ void check_distributed_force(const std::string& text) {
   EXPECT_NEAR(stab, s.stabilization_energy, 1e-12 * s.stabilization_energy);
 }
 
+// Every body's total force (material and every term) at every owned particle against
+// one rank, and the terms' energies, powers and step limits, the same on every rank, at
+// a deformed state `amplitude` (deform) after forces at the states `before`.
+void check_distributed_world_forces(const std::string& text, double amplitude, const std::vector<double>& before) {
+  const par::Comm& comm = par::Comm::world();
+  const auto scene = scene::parse_scene(text, "distributed.toml");
+  auto serial = build_world(scene, par::Comm::self());
+  auto distributed = build_world(scene, comm);
+  for (auto* w : {serial.get(), distributed.get()}) {
+    std::vector<double> states = before;
+    states.push_back(amplitude);
+    for (double a : states) {
+      for (auto& b : w->bodies) {
+        deform(*b, a);
+        b->inertia = b->mass;
+        b->v = b->d;  // a velocity field for the powers
+      }
+      for (auto& b : w->bodies)
+        if (b->distributed()) poison_unowned(*b);
+      compute_forces(*w);
+    }
+  }
+  for (std::size_t k = 0; k < serial->bodies.size(); ++k) {
+    const Body& s = *serial->bodies[k];
+    const Body& d = *distributed->bodies[k];
+    double scale = 0.0, error = 0.0;
+    for (Index i = d.owned_begin(); i < d.owned_end(); ++i) {
+      const auto j = static_cast<std::size_t>(original(d, static_cast<std::size_t>(i)));
+      scale = std::max(scale, s.force[j].norm());
+      error = std::max(error, (d.force[i] - s.force[j]).norm());
+    }
+    scale = comm.max(scale);
+    error = comm.max(error);
+    if (comm.root())
+      std::cout << "body " << d.name << " with every term, " << comm.size() << " ranks against one: " << error / scale
+                << " of the largest force\n";
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT(error, 1e-12 * scale) << d.name;
+  }
+  for (std::size_t t = 0; t < serial->terms.size(); ++t) {
+    const Term& s = *serial->terms[t];
+    const Term& d = *distributed->terms[t];
+    const double e = s.stored_energy(*serial), p = s.power(*serial), dt = s.stable_dt(*serial);
+    EXPECT_NEAR(d.stored_energy(*distributed), e, 1e-12 * std::abs(e)) << s.name();
+    EXPECT_NEAR(d.power(*distributed), p, 1e-12 * std::abs(p)) << s.name();
+    if (std::isinf(dt))
+      EXPECT_EQ(d.stable_dt(*distributed), dt) << s.name();
+    else
+      EXPECT_NEAR(d.stable_dt(*distributed), dt, 1e-12 * dt) << s.name();
+    // One value on every rank.
+    EXPECT_EQ(comm.max(d.stored_energy(*distributed)), comm.min(d.stored_energy(*distributed))) << s.name();
+  }
+  EXPECT_NE(serial->terms[0]->stored_energy(*serial), 0.0) << "the bodies are within the contact cutoff";
+  EXPECT_NE(serial->terms[3]->power(*serial), 0.0) << "the pressure does work";
+}
+
 }  // namespace
+
+TEST(DistributedForce, CellOnSubstrateWithEveryTermMatchesOneRank) {
+  omp_set_num_threads(1);
+  check_distributed_world_forces(kCellOnSubstrate, 0.2, {});
+}
+
+// The contact pair list (and each rank's ghosts of the other body) rebuilt after a
+// move beyond skin / 2, and kept after a smaller one.
+TEST(DistributedForce, CellOnSubstrateMatchesOneRankAfterThePairListIsRebuiltAndKept) {
+  omp_set_num_threads(1);
+  check_distributed_world_forces(kCellOnSubstrate, 0.41, {0.2, 0.4});
+}
 
 TEST(DistributedForce, LceBallWithFrankTermMatchesOneRank) {
   omp_set_num_threads(1);

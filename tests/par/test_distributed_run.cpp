@@ -7,13 +7,17 @@
 #include "rkpm/io/pvd_series.hpp"
 #include "rkpm/par/comm.hpp"
 #include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/compare_command.hpp"
 #include "rkpm/sim/run.hpp"
+#include "rkpm/sim/shape_command.hpp"
 #include "sim_fixtures.hpp"
 #include "vtu_read_back.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 
@@ -64,15 +68,17 @@ Outcome run(const std::string& text, const fs::path& out, const par::Comm& comm,
   return o;
 }
 
-// Final positions by particle_id, read through VTK as ParaView would (.vtu or .pvtu).
-std::map<std::int64_t, Vec3> final_positions(const fs::path& dir, double* largest_displacement) {
+// Final positions by (body_id, particle_id), read through VTK as ParaView would (.vtu or .pvtu).
+using ParticleKey = std::pair<std::int64_t, std::int64_t>;
+std::map<ParticleKey, Vec3> final_positions(const fs::path& dir, double* largest_displacement) {
   const auto entries = io::read_pvd(dir / "frames.pvd");
   const auto frame = io::test::read_vtu_back(dir / entries.back().file);
+  const auto& body = frame.point_fields.at("body_id").values;
   const auto& ids = frame.point_fields.at("particle_id").values;
   const auto& u = frame.point_fields.at("displacement").values;
-  std::map<std::int64_t, Vec3> p;
+  std::map<ParticleKey, Vec3> p;
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
-    p[static_cast<std::int64_t>(ids[i])] = frame.points[i];
+    p[{static_cast<std::int64_t>(body[i]), static_cast<std::int64_t>(ids[i])}] = frame.points[i];
     if (largest_displacement)
       *largest_displacement = std::max(*largest_displacement, Vec3(u[3 * i], u[3 * i + 1], u[3 * i + 2]).norm());
   }
@@ -89,7 +95,7 @@ double compare_final(const fs::path& serial, const fs::path& distributed) {
   for (const auto& [id, p] : a) {
     const auto it = b.find(id);
     if (it == b.end()) {
-      ADD_FAILURE() << "particle " << id << " missing from the distributed frame";
+      ADD_FAILURE() << "particle " << id.second << " of body " << id.first << " missing from the distributed frame";
       continue;
     }
     worst = std::max(worst, (it->second - p).norm());
@@ -98,12 +104,27 @@ double compare_final(const fs::path& serial, const fs::path& distributed) {
   return worst / scale;
 }
 
-std::string summary_value(const fs::path& dir, const std::string& key) {
-  const std::string text = read_text(dir / "summary.json");
+std::string json_value(const std::string& text, const std::string& key) {
   const auto at = text.find("\"" + key + "\"");
   if (at == std::string::npos) return {};
   const auto start = text.find(':', at) + 1;
   return text.substr(start, text.find_first_of(",\n}", start) - start);
+}
+
+std::string summary_value(const fs::path& dir, const std::string& key) {
+  return json_value(read_text(dir / "summary.json"), key);
+}
+
+// Runs `text` over every rank into dir/two, then (rank 0 only) as one process into
+// dir/one. Returns the final-position difference (compare_final) on rank 0, NaN on the
+// others, which have nothing left to check.
+double run_both_ways(const std::string& text, const fs::path& dir, std::int64_t max_steps = 0) {
+  const Outcome d = run(text, dir / "two", world(), max_steps);
+  EXPECT_EQ(d.code, kSuccess) << d.log;
+  if (!world().root()) return std::nan("");
+  const Outcome s = run(text, dir / "one", par::Comm::self(), max_steps);
+  EXPECT_EQ(s.code, kSuccess) << s.log;
+  return compare_final(dir / "one", dir / "two");
 }
 
 }  // namespace
@@ -111,13 +132,9 @@ std::string summary_value(const fs::path& dir, const std::string& key) {
 TEST(DistributedRun, SagRelaxationLandsOnTheOneRankState) {
   ASSERT_GE(world().size(), 2) << "run this test with mpirun -np N, N >= 2 (the suite uses 2)";
   const fs::path dir = shared_dir("sag_relax");
-  const Outcome d = run(sag_scene(), dir / "two", world());
-  EXPECT_EQ(d.code, kSuccess) << d.log;
+  const double error = run_both_ways(sag_scene(), dir);
   if (!world().root()) return;
-  const Outcome s = run(sag_scene(), dir / "one", par::Comm::self());
-  ASSERT_EQ(s.code, kSuccess) << s.log;
   EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
-  const double error = compare_final(dir / "one", dir / "two");
   std::cout << "relaxed sag, " << world().size() << " ranks against 1: final positions differ by " << error
             << " of the largest displacement; steps " << summary_value(dir / "two", "steps") << "\n";
   EXPECT_LT(error, 1e-10);
@@ -128,12 +145,8 @@ TEST(DistributedRun, SagRelaxationLandsOnTheOneRankState) {
 TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
   const fs::path dir = shared_dir("sag_dynamic");
   const std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"dynamic\"\nt_end = 1e-3\ndamping = 2e4");
-  const Outcome d = run(text, dir / "two", world(), 200);
-  EXPECT_EQ(d.code, kSuccess) << d.log;
+  const double error = run_both_ways(text, dir, 200);
   if (!world().root()) return;
-  const Outcome s = run(text, dir / "one", par::Comm::self(), 200);
-  ASSERT_EQ(s.code, kSuccess) << s.log;
-  const double error = compare_final(dir / "one", dir / "two");
   std::cout << "dynamic sag, 200 steps, " << world().size() << " ranks against 1: " << error << " of the largest displacement\n";
   EXPECT_LT(error, 1e-9);
 }
@@ -150,12 +163,8 @@ TEST(DistributedRun, RedBloodCellSceneOnACoarseCloudFollowsTheOneRankPath) {
   text = replaced(text, "max_steps = 200000", "max_steps = 300");
   text = replaced(replaced(text, "face_cells = 32", "face_cells = 12"), "layers = 5", "layers = 3");
   text = replaced(text, "distance = 0.2e-6", "distance = 1.5e-6\nexclusion = 2.0e-6");
-  const Outcome d = run(text, dir / "two", world(), 300);
-  EXPECT_EQ(d.code, kSuccess) << d.log;
+  const double error = run_both_ways(text, dir, 300);
   if (!world().root()) return;
-  const Outcome s = run(text, dir / "one", par::Comm::self(), 300);
-  ASSERT_EQ(s.code, kSuccess) << s.log;
-  const double error = compare_final(dir / "one", dir / "two");
   std::cout << "coarse RBC scene, nested level and 300 FIRE steps, " << world().size() << " ranks against 1: " << error
             << " of the largest displacement; wall-contact pairs " << summary_value(dir / "two", "active_pairs") << "\n";
   EXPECT_LT(error, 1e-10);
@@ -165,6 +174,52 @@ TEST(DistributedRun, RedBloodCellSceneOnACoarseCloudFollowsTheOneRankPath) {
   for (const std::string key : {"volume_ratio", "h_min_over_h_max"})
     EXPECT_NEAR(std::stod(summary_value(dir / "two", key)), std::stod(summary_value(dir / "one", key)), 1e-10) << key;
   EXPECT_TRUE(fs::exists(dir / "two" / "shape_profile.csv"));
+  // `rkpm shape` reads the distributed run's last frame (a .pvtu of the ranks' pieces)
+  // in the one-rank numbering: the report the run made from memory.
+  write_text(dir / "rbc.toml", text);
+  std::ostringstream out, log;
+  ASSERT_EQ(run_shape_command({dir / "rbc.toml", dir / "two", "", dir / "from_frame.csv"}, out, log), kSuccess)
+      << log.str();
+  EXPECT_NEAR(std::stod(json_value(out.str(), "h_min_over_h_max")),
+              std::stod(summary_value(dir / "two", "h_min_over_h_max")), 1e-7);
+}
+
+// The adhesion example on a coarse cloud: an LCE sphere (director with normal anchoring)
+// landing on a Mooney-Rivlin block, with the two bodies' Lennard-Jones contact, the
+// contact report and surface tension on both bodies. The skin is cut to 1/40 of the
+// default so that the pair list, and with it each rank's ghosts of the other body, is
+// rebuilt many times within the 200 steps.
+TEST(DistributedRun, AdhesionSceneOnACoarseCloudFollowsTheOneRankPath) {
+  const fs::path dir = shared_dir("adhesion_coarse");
+  std::string text = read_text(fs::path(RKPM_SOURCE_DIR) / "examples/adhesion/adhesion.toml");
+  text = replaced(text, "cells = 22", "cells = 8");
+  text = replaced(text, "cells = [40, 40, 4]", "cells = [16, 16, 3]");
+  text = replaced(text, "report_surface = \"zmax\"", "report_surface = \"zmax\"\nskin = 0.01e-6");
+  text = replaced(text, "every = 0.25e-6", "every = 0.02e-6");
+  const double error = run_both_ways(text, dir, 200);
+  if (!world().root()) return;
+  std::cout << "coarse adhesion scene, 200 dynamic steps, " << world().size() << " ranks against 1: " << error
+            << " of the largest displacement; contact pairs " << summary_value(dir / "two", "active_pairs")
+            << ", pair-list builds " << summary_value(dir / "two", "pair_list_builds") << "\n";
+  EXPECT_LT(error, 1e-9);
+  // `rkpm compare` finds the same difference, reading the frames its own way.
+  std::ostringstream out, log;
+  ASSERT_EQ(run_compare_command({dir / "one", dir / "two"}, out, log), kSuccess) << log.str();
+  EXPECT_DOUBLE_EQ(std::stod(json_value(out.str(), "relative_difference")), error) << out.str();
+  EXPECT_GT(std::stoi(summary_value(dir / "one", "active_pairs")), 0);
+  EXPECT_GT(std::stoi(summary_value(dir / "one", "pair_list_builds")), 3);
+  for (const std::string key : {"active_pairs", "listed_pairs", "pair_list_builds", "contact_particles"})
+    EXPECT_EQ(summary_value(dir / "one", key), summary_value(dir / "two", key)) << key;
+  for (const std::string key : {"min_gap", "contact_radius"}) {
+    const double one = std::stod(summary_value(dir / "one", key));
+    EXPECT_NEAR(std::stod(summary_value(dir / "two", key)), one, 1e-9 * std::abs(one)) << key;
+  }
+  // The history's contact columns, written once by rank 0 from every rank's particles.
+  const std::string history = read_text(dir / "two" / "history.csv");
+  const std::string serial_history = read_text(dir / "one" / "history.csv");
+  EXPECT_NE(history.find("contact_radius"), std::string::npos);
+  EXPECT_EQ(std::count(history.begin(), history.end(), '\n'),
+            std::count(serial_history.begin(), serial_history.end(), '\n'));
 }
 
 TEST(DistributedRun, RestartOnTheSameRankCountContinuesBitForBit) {
@@ -187,12 +242,11 @@ TEST(DistributedRun, RestartOnTheSameRankCountContinuesBitForBit) {
 
 TEST(DistributedRun, WhatDoesNotRunDistributedIsRefusedOnceWithTheLine) {
   const fs::path dir = shared_dir("sag_refused");
-  const std::string text =
-      sag_scene() + "\n[[term]]\ntype = \"surface_pressure\"\nbody = \"block\"\nsurface = \"zmax\"\npressure = 10.0\n";
+  const std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"relax\"\nmass_scaling = true");
   const Outcome d = run(text, dir / "two", world());
   EXPECT_EQ(d.code, kBadInput);
   if (world().root()) {
-    EXPECT_NE(d.log.find("type = \"surface_pressure\" does not run on more than one rank"), std::string::npos) << d.log;
+    EXPECT_NE(d.log.find("[integrator] mass_scaling does not run on more than one rank"), std::string::npos) << d.log;
     EXPECT_NE(d.log.find("sag.toml:"), std::string::npos) << d.log;
   } else {
     EXPECT_EQ(d.log, "");  // rank 0 speaks for the run

@@ -17,14 +17,19 @@
 
 namespace rkpm::sim {
 
-// p_J for every particle (parallel), out indexed by particle.
+// p_J for every particle (parallel), out indexed by particle. Distributed: for this
+// rank's own particles only (it holds their interpolation rows); the other entries are
+// untouched, for the caller to exchange.
 void physical_points(const Body& body, std::vector<Vec3>& out);
-// p_J for the listed particles only; out is indexed by particle (its other entries untouched).
+// p_J for the listed particles only (distributed: those of them this rank owns); out
+// is indexed by particle (its other entries untouched).
 void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out);
 
 // Generalized forces of point forces at every particle: force_I += sum_J Psi_I(X_J) f_J,
 // scattered from the interpolation's rows into per-thread buffers summed in thread
 // order (rk/row_scatter.hpp: deterministic for a thread count, no stored transpose).
+// Distributed: f is read at this rank's own particles only, and must be their whole
+// force there (contributions made on other ranks already added).
 void add_point_forces(Body& body, const std::vector<Vec3>& f);
 
 // The same for forces at a few listed particles (a surface, the pairs in contact):
@@ -55,6 +60,10 @@ void add_point_forces(Body& body, const std::vector<Index>& particles, double sc
     for (Index I = body.owned_begin(); I < body.owned_end(); ++I) body.force[I] += body.point_force_ghosts[I];
   }
 }
+
+// Distributed: 1 for each particle this rank owns or holds as a ghost (whose values it
+// reads and to whose owner it can return forces), 0 for the others; all 1 on one rank.
+std::vector<char> readable_particles(const Body& body);
 
 // The surface-mask bit of a named surface of the body's cloud; 0 for "all" (every
 // boundary particle or facet qualifies).

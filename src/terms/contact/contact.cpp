@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -53,8 +55,8 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 
 }  // namespace
 
-Contact::Contact(Body& a, Body& b, const ContactSettings& s)
-    : a_(a), b_(b), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
+Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& comm)
+    : a_(a), b_(b), comm_(comm), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
       pairs_(s.cutoff, s.skin), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
@@ -70,8 +72,10 @@ Contact::Contact(Body& a, Body& b, const ContactSettings& s)
   force_[1].assign(b.size(), Vec3::Zero());
   if (!s.report_surface.empty()) {
     // Gaps are searched up to 4 cutoffs: beyond, the bodies do not interact anyway.
-    report_.emplace(a, b, s.report_surface, s.contact_gap > 0.0 ? s.contact_gap : s.s0, 4.0 * s.cutoff);
+    report_.emplace(a, b, s.report_surface, s.contact_gap > 0.0 ? s.contact_gap : s.s0, 4.0 * s.cutoff, comm);
   }
+  if (!b.distributed())
+    for (Index j = 0; j < static_cast<Index>(b.size()); ++j) columns_.push_back(j);
 }
 
 ContactSample Contact::sample() const {
@@ -85,29 +89,70 @@ ContactSample Contact::sample() const {
   return s;
 }
 
-namespace {
-
-}  // namespace
+void Contact::choose_partner_ghosts() {
+  // This rank's A points, grown by the list's radius: the B particles it may pair with
+  // until the next rebuild lie inside.
+  const double grow = pairs_.cutoff() + pairs_.skin();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) {
+    lo = lo.cwiseMin(points_[0][i]);
+    hi = hi.cwiseMax(points_[0][i]);
+  }
+  std::vector<double> box(6);
+  for (int c = 0; c < 3; ++c) {
+    box[c] = lo[c] - grow;
+    box[3 + c] = hi[c] + grow;
+  }
+  const std::vector<double> boxes = comm_.gather(box);
+  // Each owner of B sends every other rank the ids of its particles inside that rank's box.
+  const auto ranks = static_cast<std::size_t>(comm_.size());
+  std::vector<std::vector<std::int64_t>> send(ranks), received;
+  for (std::size_t r = 0; r < ranks; ++r) {
+    if (static_cast<int>(r) == comm_.rank()) continue;
+    const double* bx = boxes.data() + 6 * r;
+    for (Index j = b_.owned_begin(); j < b_.owned_end(); ++j) {
+      const Vec3& p = points_[1][j];
+      bool inside = true;
+      for (int c = 0; c < 3; ++c) inside = inside && p[c] >= bx[c] && p[c] <= bx[3 + c];
+      if (inside) send[r].push_back(j);
+    }
+  }
+  comm_.exchange(send, received);
+  std::vector<Index> ghosts;
+  for (const auto& from : received) ghosts.insert(ghosts.end(), from.begin(), from.end());
+  partner_ghosts_ = par::GhostExchange();
+  partner_ghosts_.build(comm_, b_.ghosts.offset(), ghosts);
+  columns_.clear();
+  for (Index j = b_.owned_begin(); j < b_.owned_end(); ++j) columns_.push_back(j);
+  for (const auto& group : partner_ghosts_.ghosts_by_owner()) columns_.insert(columns_.end(), group.begin(), group.end());
+  std::sort(columns_.begin(), columns_.end());
+}
 
 void Contact::add_forces(World&) {
   const auto start = std::chrono::steady_clock::now();
-  physical_points(a_, points_[0]);
+  physical_points(a_, points_[0]);  // distributed: the owned particles'
   physical_points(b_, points_[1]);
+  const bool split = b_.distributed();
+  const Index row_begin = a_.owned_begin(), row_end = a_.owned_end();
+  const double moved = comm_.max(
+      pairs_.largest_move(points_[0], row_begin, row_end, points_[1], b_.owned_begin(), b_.owned_end()));
+  const bool stale = moved > 0.5 * pairs_.skin();
+  if (split && stale) choose_partner_ghosts();
+  if (split) partner_ghosts_.pull(points_[1]);
+  if (stale) pairs_.rebuild(points_[0], row_begin, row_end, points_[1], columns_);
   const auto& pa = points_[0];
   const auto& pb = points_[1];
-  pairs_.update(pa, pb);
   const auto& offset = pairs_.row_offset();
   const auto& partner = pairs_.partner();
   const auto& na = molecules_[0];
   const auto& nb = molecules_[1];
   const double rc2 = cutoff_ * cutoff_;
   pair_force_.resize(pairs_.size());
-  row_energy_.resize(a_.size());
+  row_energy_.resize(a_.size());  // only the owned rows are written and read
   std::size_t active = 0;
 
-  const auto rows = static_cast<Index>(a_.size());
 #pragma omp parallel for schedule(dynamic, 64) reduction(+ : active)
-  for (Index i = 0; i < rows; ++i) {
+  for (Index i = row_begin; i < row_end; ++i) {
     double e = 0.0;
     Vec3 fi = Vec3::Zero();
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
@@ -128,29 +173,35 @@ void Contact::add_forces(World&) {
     row_energy_[i] = e;
     force_[0][i] = fi;
   }
-  // B's particles gather their pairs through the transpose (ordered by A's id).
+  // B's particles gather their pairs through the transpose (ordered by A's id); a
+  // ghost's sum then goes to its owner.
   const auto& col_offset = pairs_.column_offset();
   const auto& col_entry = pairs_.column_entry();
-  const auto cols = static_cast<Index>(b_.size());
+  const auto cols = static_cast<Index>(columns_.size());
 #pragma omp parallel for schedule(dynamic, 64)
-  for (Index j = 0; j < cols; ++j) {
+  for (Index c = 0; c < cols; ++c) {
+    const Index j = columns_[c];
     Vec3 fj = Vec3::Zero();
     for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) fj -= pair_force_[col_entry[k]];
     force_[1][j] = fj;
   }
+  if (split) partner_ghosts_.push_add(force_[1]);
   add_point_forces(a_, force_[0]);
   add_point_forces(b_, force_[1]);
 
   double energy = 0.0;  // serial, in particle order: the same sum for any thread count
-  for (double e : row_energy_) energy += e;
-  energy_ = energy;
-  active_pairs_ = active;
+  for (Index i = row_begin; i < row_end; ++i) energy += row_energy_[i];
+  energy_ = comm_.sum(energy);
+  active_pairs_ = static_cast<std::size_t>(comm_.sum(static_cast<std::int64_t>(active)));
   ++evaluations_;
   seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Distributed: each rank sums the pairs it evaluates; a B ghost's partial sum goes to
+// its owner before the maximum.
 double Contact::stable_dt(const World&) const {
-  if (pairs_.builds() == 0 || pairs_.size() == 0) return std::numeric_limits<double>::infinity();
+  if (pairs_.builds() == 0 || comm_.sum(static_cast<std::int64_t>(pairs_.size())) == 0)
+    return std::numeric_limits<double>::infinity();
   const auto& offset = pairs_.row_offset();
   const auto& partner = pairs_.partner();
   const auto& na = molecules_[0];
@@ -158,9 +209,8 @@ double Contact::stable_dt(const World&) const {
   const double rc2 = cutoff_ * cutoff_;
   // Per listed pair inside the cutoff: k_IJ; per particle the Gershgorin row sum.
   std::vector<double> row_a(a_.size(), 0.0), row_b(b_.size(), 0.0);
-  const auto rows = static_cast<Index>(a_.size());
 #pragma omp parallel for schedule(dynamic, 64)
-  for (Index i = 0; i < rows; ++i) {
+  for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) {
     double g = 0.0;
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {
       const Index j = partner[k];
@@ -174,9 +224,10 @@ double Contact::stable_dt(const World&) const {
   const auto& col_offset = pairs_.column_offset();
   const auto& col_entry = pairs_.column_entry();
   const auto& entry_row = pairs_.entry_row();
-  const auto cols = static_cast<Index>(b_.size());
+  const auto cols = static_cast<Index>(columns_.size());
 #pragma omp parallel for schedule(dynamic, 64)
-  for (Index j = 0; j < cols; ++j) {
+  for (Index c = 0; c < cols; ++c) {
+    const Index j = columns_[c];
     double g = 0.0;
     for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) {
       const Index i = entry_row[col_entry[k]];
@@ -187,9 +238,11 @@ double Contact::stable_dt(const World&) const {
     }
     row_b[j] = g;
   }
+  if (b_.distributed()) partner_ghosts_.push_add(row_b.data(), 1);
   double omega2 = 0.0;
-  for (double g : row_a) omega2 = std::max(omega2, g);
-  for (double g : row_b) omega2 = std::max(omega2, g);
+  for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) omega2 = std::max(omega2, row_a[i]);
+  for (Index j = b_.owned_begin(); j < b_.owned_end(); ++j) omega2 = std::max(omega2, row_b[j]);
+  omega2 = comm_.max(omega2);
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 
@@ -197,12 +250,12 @@ void Contact::report(const World&, io::Json& summary) const {
   io::Json j = io::Json::object();
   j.set("energy", energy_);
   j.set("active_pairs", active_pairs_);
-  j.set("listed_pairs", pairs_.size());
+  j.set("listed_pairs", comm_.sum(static_cast<std::int64_t>(pairs_.size())));
   j.set("pair_list_builds", pairs_.builds());
   Vec3 total = Vec3::Zero();
-  for (const auto& f : force_[0]) total += f;
+  for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) total += force_[0][i];
   io::Json force = io::Json::array();
-  for (int k = 0; k < 3; ++k) force.push_back(total[k]);
+  for (int k = 0; k < 3; ++k) force.push_back(comm_.sum(total[k]));
   j.set("force_on_" + a_.name, force);
   if (law_ == StiffnessLaw::linear) j.set("stiffness_reference", mu_reference_);
   j.set("force_evaluations", evaluations_);
@@ -248,7 +301,8 @@ std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& worl
   const sim::ContactSettings s = settings_table().read(params);
   sim::Body& a = named_body(world, params, s.bodies[0]);
   sim::Body& b = named_body(world, params, s.bodies[1]);
-  return constructed(params, [&]() -> std::unique_ptr<sim::Term> { return std::make_unique<sim::Contact>(a, b, s); });
+  return constructed(params,
+                     [&]() -> std::unique_ptr<sim::Term> { return std::make_unique<sim::Contact>(a, b, s, *world.comm); });
 }
 
 }  // namespace rkpm::terms::contact

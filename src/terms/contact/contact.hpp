@@ -29,11 +29,21 @@
 // truncated potential; docs/contact.md gives the resulting half-space traction law
 // and its deviation from the untruncated one.
 // Pairs come from a Verlet list with a skin (contact_pairs.hpp).
+//
+// Distributed: a rank evaluates the pairs of the particles of A it owns, against the
+// particles of B it owns and the B ghosts near them. Those ghosts are chosen at each
+// rebuild of the list, which every rank makes together as soon as any particle moved
+// more than skin/2: each rank states the box of its A points grown by cutoff + skin,
+// and the owners of B send it their particles inside. Between rebuilds nothing moves
+// more than skin/2, so every pair within the cutoff has its B particle among them.
+// Every step the ghosts' physical points are pulled from their owners and the pair
+// forces on them pushed back, summed in rank order.
 #pragma once
 
 #include "terms/contact/contact_pairs.hpp"
 #include "terms/contact/contact_report.hpp"
 #include "terms/contact/settings.hpp"
+#include "rkpm/par/ghost_exchange.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <array>
@@ -64,8 +74,9 @@ struct LennardJones {
 
 class Contact final : public Term {
  public:
-  Contact(Body& a, Body& b, const ContactSettings& settings);
+  Contact(Body& a, Body& b, const ContactSettings& settings, const par::Comm& comm = par::Comm::self());
   std::string name() const override { return "contact"; }
+  bool distributed() const override { return true; }
   void add_forces(World& world) override;
   double stored_energy(const World&) const override { return energy_; }
   // Critical step of the pair springs at the current configuration: with k_IJ the
@@ -78,15 +89,15 @@ class Contact final : public Term {
   std::vector<std::string> history_columns() const override;
   std::string history_values(const World&) const override;
 
-  // At the last force evaluation: the energy, the number of pairs inside the cutoff,
-  // the total force on body A (B carries its opposite).
+  // At the last force evaluation (over every rank): the energy, the number of pairs
+  // inside the cutoff.
   double energy() const { return energy_; }
   std::size_t active_pairs() const { return active_pairs_; }
   const ContactPairs& pairs() const { return pairs_; }
   // Molecules of each particle, n_I w_I (index 0 = body A, 1 = body B).
   const std::vector<double>& molecules(int body) const { return molecules_[body]; }
   // Forces on the physical points of each body (with RK operators, the generalized
-  // forces are sum_J Psi_I(X_J) of these).
+  // forces are sum_J Psi_I(X_J) of these); distributed, valid at the owned particles.
   const std::vector<Vec3>& force_on(int body) const { return force_[body]; }
 
   // The declared report (report_surface): measures the present state and keeps the
@@ -98,8 +109,12 @@ class Contact final : public Term {
   double seconds() const { return seconds_; }
 
  private:
+  // Distributed: chooses the B ghosts near this rank's A points (collective).
+  void choose_partner_ghosts();
+
   Body& a_;
   Body& b_;
+  const par::Comm& comm_;
   LennardJones lj_;
   double cutoff_;
   double energy_shift_;  // phi(cutoff)
@@ -109,6 +124,8 @@ class Contact final : public Term {
   std::array<std::vector<Vec3>, 2> points_;  // physical positions at the last evaluation
   std::vector<Vec3> pair_force_;    // on A's particle of each listed pair
   std::vector<double> row_energy_;  // per particle of A
+  std::vector<Index> columns_;      // the particles of B this rank's rows may pair with, increasing
+  par::GhostExchange partner_ghosts_;  // distributed: the B ghosts among them
   double energy_ = 0.0, mu_reference_ = 0.0;
   std::size_t active_pairs_ = 0;
   StiffnessLaw law_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -16,22 +17,36 @@ ContactPairs::ContactPairs(double cutoff, double skin) : cutoff_(cutoff), skin_(
                                 std::to_string(cutoff) + ", skin = " + std::to_string(skin));
 }
 
-double ContactPairs::largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build) {
+double ContactPairs::largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build, Index begin,
+                                  Index end) {
   double worst = 0.0;
-  const auto n = static_cast<Index>(x.size());
 #pragma omp parallel for schedule(static) reduction(max : worst)
-  for (Index i = 0; i < n; ++i) worst = std::max(worst, (x[i] - at_build[i]).squaredNorm());
+  for (Index i = begin; i < end; ++i) worst = std::max(worst, (x[i] - at_build[i]).squaredNorm());
   return std::sqrt(worst);
 }
 
+double ContactPairs::largest_move(const std::vector<Vec3>& xa, Index a_begin, Index a_end,
+                                  const std::vector<Vec3>& xb, Index b_begin, Index b_end) const {
+  if (builds_ == 0) return std::numeric_limits<double>::infinity();
+  return std::max(largest_move(xa, xa_built_, a_begin, a_end), largest_move(xb, xb_built_, b_begin, b_end));
+}
+
 bool ContactPairs::update(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb) {
+  const auto na = static_cast<Index>(xa.size()), nb = static_cast<Index>(xb.size());
   const bool stale = builds_ == 0 || xa.size() != xa_built_.size() || xb.size() != xb_built_.size() ||
-                     largest_move(xa, xa_built_) > 0.5 * skin_ || largest_move(xb, xb_built_) > 0.5 * skin_;
+                     largest_move(xa, 0, na, xb, 0, nb) > 0.5 * skin_;
   if (stale) rebuild(xa, xb);
   return stale;
 }
 
 void ContactPairs::rebuild(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb) {
+  std::vector<Index> every(xb.size());
+  for (std::size_t j = 0; j < every.size(); ++j) every[j] = static_cast<Index>(j);
+  rebuild(xa, 0, static_cast<Index>(xa.size()), xb, every);
+}
+
+void ContactPairs::rebuild(const std::vector<Vec3>& xa, Index row_begin, Index row_end, const std::vector<Vec3>& xb,
+                           const std::vector<Index>& columns) {
   xa_built_ = xa;
   xb_built_ = xb;
   ++builds_;
@@ -39,19 +54,22 @@ void ContactPairs::rebuild(const std::vector<Vec3>& xa, const std::vector<Vec3>&
   const auto nb = static_cast<Index>(xb.size());
   const double radius = cutoff_ + skin_;
 
-  // Rows in parallel into per-row buffers, then concatenated in row order.
+  // Rows in parallel into per-row buffers, then concatenated in row order. The tree
+  // holds the listed columns only; increasing columns keep each row's ids increasing.
   std::vector<std::vector<Index>> rows(static_cast<std::size_t>(na));
-  if (nb > 0) {
-    const rk::NeighborSearch search(xb_built_);
+  if (!columns.empty()) {
+    std::vector<Vec3> listed(columns.size());
+    for (std::size_t c = 0; c < columns.size(); ++c) listed[c] = xb[static_cast<std::size_t>(columns[c])];
+    const rk::NeighborSearch search(listed);
 #pragma omp parallel
     {
       std::vector<std::pair<Index, double>> found;
 #pragma omp for schedule(dynamic, 64)
-      for (Index i = 0; i < na; ++i) {
-        search.query(xa[i], radius, found);  // sorted by id
+      for (Index i = row_begin; i < row_end; ++i) {
+        search.query(xa[i], radius, found);  // sorted by position in `listed`
         auto& row = rows[static_cast<std::size_t>(i)];
         row.reserve(found.size());
-        for (const auto& f : found) row.push_back(f.first);
+        for (const auto& f : found) row.push_back(columns[static_cast<std::size_t>(f.first)]);
       }
     }
   }

@@ -30,6 +30,16 @@ class ContactPairs {
   bool update(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb);
   // Unconditional rebuild at the given positions.
   void rebuild(const std::vector<Vec3>& xa, const std::vector<Vec3>& xb);
+  // Rebuild for the rows [row_begin, row_end) of A against the listed particles of B
+  // (`columns`, increasing): what one rank of a distributed run holds. The other rows
+  // and columns stay empty; the positions of unlisted particles are not read.
+  void rebuild(const std::vector<Vec3>& xa, Index row_begin, Index row_end, const std::vector<Vec3>& xb,
+               const std::vector<Index>& columns);
+  // The largest distance a particle of A in [a_begin, a_end) or of B in [b_begin, b_end)
+  // moved since the last build (infinite before the first): the list is stale once it
+  // exceeds skin / 2, a test a distributed run makes over every rank.
+  double largest_move(const std::vector<Vec3>& xa, Index a_begin, Index a_end, const std::vector<Vec3>& xb,
+                      Index b_begin, Index b_end) const;
 
   double cutoff() const { return cutoff_; }
   double skin() const { return skin_; }
@@ -45,7 +55,7 @@ class ContactPairs {
   const std::vector<Index>& entry_row() const { return entry_row_; }  // I of each entry
 
  private:
-  static double largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build);
+  static double largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build, Index begin, Index end);
 
   double cutoff_, skin_;
   std::size_t builds_ = 0;

@@ -37,8 +37,8 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
 }  // namespace
 
 ContactReport::ContactReport(const Body& cell, const Body& substrate, const std::string& surface, double contact_gap,
-                             double range)
-    : cell_(cell), substrate_(substrate), surface_(surface), contact_gap_(contact_gap), range_(range) {
+                             double range, const par::Comm& comm)
+    : cell_(cell), substrate_(substrate), surface_(surface), contact_gap_(contact_gap), range_(range), comm_(comm) {
   const auto& cloud = substrate.cloud;
   const std::uint32_t bit = surface == "all" ? 0u : cloud.surface_bit(surface);
   if (surface != "all" && bit == 0u)
@@ -52,24 +52,29 @@ ContactReport::ContactReport(const Body& cell, const Body& substrate, const std:
   }
   if (triangles_.empty())
     throw std::invalid_argument("contact report: surface '" + surface + "' of body '" + substrate.name + "' has no faces");
+  for (const auto& t : triangles_) corners_.insert(corners_.end(), t.begin(), t.end());
+  std::sort(corners_.begin(), corners_.end());
+  corners_.erase(std::unique(corners_.begin(), corners_.end()), corners_.end());
+  const auto& boundary = cell.cloud.boundary_particles;
+  cell_particles_.assign(boundary.begin(), boundary.end());
+  if (substrate.distributed()) shared_corners_.build(comm, substrate.ghosts.offset(), corners_);
+  if (cell.distributed()) shared_cell_.build(comm, cell.ghosts.offset(), cell_particles_);
 }
 
 ContactSample ContactReport::measure() const {
   ContactSample s;
   double mass = 0.0;
-  for (std::size_t i = 0; i < cell_.size(); ++i) {
+  for (Index i = cell_.owned_begin(); i < cell_.owned_end(); ++i) {
     s.centroid += cell_.mass[i] * cell_.x[i];
     mass += cell_.mass[i];
   }
-  s.centroid /= mass;
+  for (int c = 0; c < 3; ++c) s.centroid[c] = comm_.sum(s.centroid[c]);
+  s.centroid /= comm_.sum(mass);
 
   // Current triangles: physical corners, centroids in a kd-tree, largest circumradius.
-  std::vector<Index> corners;
-  for (const auto& t : triangles_) corners.insert(corners.end(), t.begin(), t.end());
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   std::vector<Vec3> sub;
-  physical_points(substrate_, corners, sub);
+  physical_points(substrate_, corners_, sub);
+  if (shared_corners_.built()) shared_corners_.update(sub);
   std::vector<Vec3> centre(triangles_.size());
   double reach = 0.0;
   for (std::size_t t = 0; t < triangles_.size(); ++t) {
@@ -79,15 +84,14 @@ ContactSample ContactReport::measure() const {
   }
   const rk::NeighborSearch search(centre);
 
-  const auto& boundary = cell_.cloud.boundary_particles;
-  std::vector<Index> cell_particles(boundary.begin(), boundary.end());
   std::vector<Vec3> cell;
-  physical_points(cell_, cell_particles, cell);
+  physical_points(cell_, cell_particles_, cell);
+  if (shared_cell_.built()) shared_cell_.update(cell);
 
   s.min_gap = range_;
   std::vector<std::pair<Index, double>> found;
   std::vector<Vec3> patch, patch_normal;
-  for (Index i : cell_particles) {
+  for (Index i : cell_particles_) {
     search.query(cell[i], range_ + reach, found);
     double best = std::numeric_limits<double>::infinity(), signed_gap = 0.0;
     Vec3 normal = Vec3::Zero();

@@ -18,6 +18,7 @@
 //     the plane normal to the mean normal of their nearest faces.
 #pragma once
 
+#include "rkpm/par/shared_particles.hpp"
 #include "rkpm/sim/body.hpp"
 
 #include <array>
@@ -38,8 +39,10 @@ class ContactReport {
  public:
   // `surface` must name a surface of `substrate` (std::invalid_argument otherwise).
   // Faces farther than `range` from a particle are not searched.
+  // Distributed: `comm` holds the bodies' ranks; each measure gathers the points it
+  // reads to every rank (a surface: small next to the bodies) and is collective.
   ContactReport(const Body& cell, const Body& substrate, const std::string& surface, double contact_gap,
-                double range);
+                double range, const par::Comm& comm = par::Comm::self());
   ContactSample measure() const;
 
   const std::string& surface() const { return surface_; }
@@ -50,11 +53,11 @@ class ContactReport {
   const Body& substrate_;
   std::string surface_;
   double contact_gap_, range_;
+  const par::Comm& comm_;
   std::vector<std::array<Index, 3>> triangles_;  // substrate particles, outward order
+  std::vector<Index> corners_;                   // their particles, increasing
+  std::vector<Index> cell_particles_;            // the cell's boundary particles
+  par::SharedParticles shared_corners_, shared_cell_;  // distributed: gathered to every rank
 };
-
-// Physical positions X_J + sum_I Psi_I(X_J) d_I of the listed particles (X + d for a
-// body built without RK operators), written at their indices of `out` (size of the body).
-void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out);
 
 }  // namespace rkpm::sim

@@ -48,8 +48,8 @@ double face_area(const particles::BoundaryFace& face, const std::vector<Vec3>& x
   return 0.5 * area;
 }
 
-SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double gamma)
-    : body_(body), surface_(surface), gamma_(gamma) {
+SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double gamma, const par::Comm& comm)
+    : body_(body), comm_(comm), surface_(surface), gamma_(gamma) {
   const auto& cloud = body.cloud;
   const std::uint32_t surface_bit = surface_selector(body, surface);
   if (surface != "all" && surface_bit == 0u)
@@ -66,6 +66,20 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
     for (int k = 0; k < cloud.boundary_faces[f].n_nodes; ++k) nodes_.push_back(cloud.boundary_faces[f].nodes[k]);
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  if (body.distributed()) {
+    // Keep the faces whose lowest node this rank owns; their other nodes are ghosts here.
+    std::vector<Index> ghosts;
+    std::vector<std::int32_t> mine;
+    for (auto f : faces_) {
+      const auto& face = cloud.boundary_faces[f];
+      const Index lowest = *std::min_element(face.nodes, face.nodes + face.n_nodes);
+      if (lowest < body.owned_begin() || lowest >= body.owned_end()) continue;
+      mine.push_back(f);
+      ghosts.insert(ghosts.end(), face.nodes, face.nodes + face.n_nodes);
+    }
+    faces_ = std::move(mine);
+    face_ghosts_.build(comm, body.ghosts.offset(), std::move(ghosts));
+  }
   points_.assign(body.size(), Vec3::Zero());
   gradient_.assign(body.size(), Vec3::Zero());
   initial_area_ = area_ = measure_area();
@@ -73,13 +87,14 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
 
 void SurfaceTension::update_points() const {
   physical_points(body_, nodes_, points_);
+  if (face_ghosts_.built()) face_ghosts_.pull(points_);
 }
 
 double SurfaceTension::measure_area() const {
   update_points();
   double area = 0.0;
   for (auto f : faces_) area += face_area(body_.cloud.boundary_faces[f], points_, nullptr);
-  return area;
+  return comm_.sum(area);
 }
 
 void SurfaceTension::add_forces(World&) {
@@ -94,9 +109,10 @@ void SurfaceTension::add_forces(World&) {
     area += face_area(face, points_, grad);
     for (int k = 0; k < face.n_nodes; ++k) gradient_[face.nodes[k]] += grad[k];
   }
-  // f_I = -gamma sum_J Psi_I(X_J) dA/dp_J.
+  if (face_ghosts_.built()) face_ghosts_.push_add(gradient_);
+  // f_I = -gamma sum_J Psi_I(X_J) dA/dp_J (distributed: at the owned nodes).
   add_point_forces(body_, nodes_, -gamma_, [&](std::size_t i) -> const Vec3& { return gradient_[nodes_[i]]; });
-  area_ = area;
+  area_ = comm_.sum(area);
 }
 
 double SurfaceTension::stable_dt(const World&) const {
@@ -115,9 +131,11 @@ double SurfaceTension::stable_dt(const World&) const {
     const double k = face.n_nodes * gamma_ * longest2 / area;
     for (int p = 0; p < face.n_nodes; ++p) row[face.nodes[p]] += k;
   }
+  if (face_ghosts_.built()) face_ghosts_.push_add(row.data(), 1);
   double omega2 = 0.0;
-  for (std::size_t i = 0; i < row.size(); ++i)
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i)
     if (row[i] > 0.0) omega2 = std::max(omega2, row[i] / body_.inertia[i]);
+  omega2 = comm_.max(omega2);
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }
 
@@ -140,7 +158,8 @@ namespace rkpm::terms::surface_tension {
 std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
   const sim::SurfaceTensionSettings s = settings_table().read(params);
   sim::Body& body = named_body(world, params, s.body);
-  return constructed(params, [&] { return std::make_unique<sim::SurfaceTension>(body, s.surface, s.gamma); });
+  return constructed(params,
+                     [&] { return std::make_unique<sim::SurfaceTension>(body, s.surface, s.gamma, *world.comm); });
 }
 
 }  // namespace rkpm::terms::surface_tension

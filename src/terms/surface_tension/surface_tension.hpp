@@ -19,8 +19,12 @@
 // A is homogeneous of degree 2 in the positions, so at equilibrium the mean pressure
 // inside a body is about 2 gamma A / (3 v), i.e. 2 gamma / R for a sphere (Young-Laplace).
 // Bodies built without RK operators (tests) use p = X + d.
+// Distributed: a face belongs to the rank that owns its lowest node. That rank pulls the
+// physical points of the face's other nodes from their owners and pushes the area
+// gradient it puts on them back; the area and the step limit are reduced over the ranks.
 #pragma once
 
+#include "rkpm/par/ghost_exchange.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
@@ -37,8 +41,9 @@ class SurfaceTension final : public Term {
  public:
   // surface = "all": every boundary face; otherwise the faces all of whose nodes lie
   // on that named surface of the cloud (std::invalid_argument if it has none such).
-  SurfaceTension(Body& body, const std::string& surface, double gamma);
+  SurfaceTension(Body& body, const std::string& surface, double gamma, const par::Comm& comm = par::Comm::self());
   std::string name() const override { return "surface_tension"; }
+  bool distributed() const override { return true; }
   void add_forces(World& world) override;
   double stored_energy(const World&) const override { return gamma_ * area_; }
   // Critical step of the tension's stiffness. Moving a node of a face by delta out of
@@ -53,17 +58,20 @@ class SurfaceTension final : public Term {
 
   double area() const { return area_; }                  // at the last force evaluation [m^2]
   double initial_area() const { return initial_area_; }  // at construction [m^2]
-  // Current area at the body's present positions (no forces).
+  // Current area at the body's present positions (no forces; collective).
   double measure_area() const;
 
  private:
-  // Physical positions of the face nodes (entries of other particles are untouched).
+  // Physical positions of the nodes of this rank's faces (entries of other particles
+  // are untouched).
   void update_points() const;
 
   Body& body_;
+  const par::Comm& comm_;
   std::string surface_;
-  std::vector<std::int32_t> faces_;  // indices into cloud.boundary_faces
-  std::vector<Index> nodes_;         // particles on those faces, increasing
+  std::vector<std::int32_t> faces_;  // this rank's faces: indices into cloud.boundary_faces
+  std::vector<Index> nodes_;         // particles on every rank's faces, increasing
+  par::GhostExchange face_ghosts_;   // distributed: the nodes of this rank's faces it does not own
   mutable std::vector<Vec3> points_; // physical positions, indexed by particle
   std::vector<Vec3> gradient_;       // dA/dp at the face nodes, indexed by particle
   double gamma_;

@@ -78,10 +78,7 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
 // or one of its ghosts (the facets are part of the cell's SCNI boundary, so their
 // supports are within the gradient row's columns).
 void VolumeConstraint::check_ghosts() const {
-  std::vector<char> readable(body_.size(), 0);
-  std::fill(readable.begin() + body_.owned_begin(), readable.begin() + body_.owned_end(), 1);
-  for (const auto& group : body_.ghosts.ghosts_by_owner())
-    for (Index g : group) readable[static_cast<std::size_t>(g)] = 1;
+  const std::vector<char> readable = readable_particles(body_);
   for (std::size_t r = 0; r < owner_.size(); ++r) {
     if (!owns_row(r)) continue;
     for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k)

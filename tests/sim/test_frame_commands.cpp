@@ -1,9 +1,14 @@
-// `rkpm shape`: the shape report measured from a frame of a run equals the report of
-// the same positions measured in memory, and bad input names the file and the problem.
+// The commands that read a finished run's frames. `rkpm shape`: the shape report
+// measured from a frame of a run equals the report of the same positions measured in
+// memory. `rkpm compare`: two runs of a scene compared particle by particle. Bad input
+// names the file and the problem.
 #include "sim_fixtures.hpp"
 
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/run.hpp"
+#include "rkpm/sim/compare_command.hpp"
+#include "rkpm/io/frame_points.hpp"
+#include "rkpm/io/pvd_series.hpp"
 #include "rkpm/sim/shape_command.hpp"
 #include "rkpm/sim/shape_report.hpp"
 
@@ -127,6 +132,52 @@ TEST(ShapeCommand, MissingFrameAndUnknownBodyAreNamed) {
   log.str("");
   EXPECT_EQ(run_shape_command({r.scene, r.dir / "out", "membrane", ""}, out, log), kBadInput);
   EXPECT_NE(log.str().find("no body named 'membrane'"), std::string::npos) << log.str();
+}
+
+// The value of `"key": value` in the command's JSON line.
+double json_number(const std::string& text, const std::string& key) {
+  const auto at = text.find("\"" + key + "\": ");
+  if (at == std::string::npos) throw std::invalid_argument(key + " not in " + text);
+  return std::stod(text.substr(at + key.size() + 4));
+}
+
+TEST(CompareCommand, ARerunEndsWhereTheRunEndedAndTheFirstStepMovesFromTheStart) {
+  const RunDir a = run_one_step("compare_a", 6);
+  const RunDir b = run_one_step("compare_b", 6);
+  std::ostringstream out, log;
+  ASSERT_EQ(run_compare_command({a.dir / "out", b.dir / "out"}, out, log), kSuccess) << log.str();
+  EXPECT_EQ(json_number(out.str(), "largest_difference"), 0.0) << out.str();  // deterministic
+  EXPECT_GT(json_number(out.str(), "particles"), 100.0);
+
+  // The initial frame against the last: the particles moved by the step, at most by
+  // their largest displacement plus the initial stretch's.
+  const auto entries = io::read_pvd(a.dir / "out" / "frames.pvd");
+  ASSERT_GE(entries.size(), 2u);
+  const fs::path first = a.dir / "out" / entries.front().file, last = a.dir / "out" / entries.back().file;
+  out.str("");
+  ASSERT_EQ(run_compare_command({last, first}, out, log), kSuccess) << log.str();
+  const io::FramePoints p = io::read_frame_points(last), q = io::read_frame_points(first);
+  double moved = 0.0, largest = 0.0;
+  for (std::size_t k = 0; k < p.position.size(); ++k) {
+    moved = std::max(moved, (p.position[k] - q.position[k]).norm());
+    largest = std::max(largest, p.displacement[k].norm());
+  }
+  EXPECT_GT(moved, 0.0);
+  EXPECT_EQ(json_number(out.str(), "largest_difference"), moved);
+  EXPECT_EQ(json_number(out.str(), "largest_displacement"), largest);
+  EXPECT_NEAR(json_number(out.str(), "relative_difference"), moved / largest, 1e-15);
+}
+
+TEST(CompareCommand, RunsOfDifferentCloudsAndMissingFramesAreRefused) {
+  const RunDir coarse = run_one_step("compare_coarse", 6);
+  const RunDir fine = run_one_step("compare_fine", 8);
+  std::ostringstream out, log;
+  EXPECT_EQ(run_compare_command({coarse.dir / "out", fine.dir / "out"}, out, log), kBadInput);
+  EXPECT_NE(log.str().find("different bodies or particle counts"), std::string::npos) << log.str();
+  log.str("");
+  EXPECT_EQ(run_compare_command({coarse.dir / "out", coarse.dir / "nothing.pvtu"}, out, log), kBadInput);
+  EXPECT_NE(log.str().find("nothing.pvtu: no such file"), std::string::npos) << log.str();
+  EXPECT_EQ(out.str(), "");
 }
 
 }  // namespace
