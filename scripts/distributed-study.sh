@@ -166,8 +166,8 @@ EOF
 doc=$here/docs/distributed.md
 if [ "$out" = "$here/docs/figures" ]; then
   awk -v md="$md" '
-    /<!-- BEGIN GENERATED/ { print; print ""; while ((getline line < md) > 0) print line; print ""; print "![time per step](figures/distributed-scaling.png)"; print ""; skip = 1; next }
-    /<!-- END GENERATED/ { skip = 0 }
+    /<!-- BEGIN GENERATED: scripts\/distributed-study.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; print "![time per step](figures/distributed-scaling.png)"; print ""; skip = 1; next }
+    skip && /<!-- END GENERATED/ { skip = 0 }
     !skip { print }' "$doc" >"$scratch/doc.md" && cp "$scratch/doc.md" "$doc"
   echo "distributed-study: updated $doc"
 fi

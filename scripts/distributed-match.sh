@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# Every example scene distributed against one process (docs/distributed.md): each scene
+# runs as one process and on each rank count of RKPM_RANKS (mpirun, one thread per
+# rank), and `rkpm compare` gives the largest distance between the final positions over
+# the largest displacement. Relaxations run to the scene's own convergence (the same
+# step count is expected); dynamic scenes run RKPM_DYNAMIC_STEPS steps, as the
+# matching target states. Writes OUT/distributed-match.csv and the table: the generated
+# part of docs/distributed.md with the default OUT (docs/figures), otherwise
+# OUT/distributed-match.md.
+# Usage: bash scripts/distributed-match.sh [BUILD_DIR] [OUT_DIR]
+#   environment: RKPM_RANKS (default "2 4"), RKPM_DYNAMIC_STEPS (default 200),
+#                RKPM_SCENES (default: every example scene, paths under examples/),
+#                RKPM_BIN (a built rkpm to use instead of building BUILD_DIR).
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$here/build}
+out=${2:-$here/docs/figures}
+ranks_list=${RKPM_RANKS:-2 4}
+dynamic_steps=${RKPM_DYNAMIC_STEPS:-200}
+scenes=${RKPM_SCENES:-sag/sag.toml rbc/rbc.toml rbc/control.toml spread_cell/spread_cell.toml adhesion/adhesion.toml crawling/crawling.toml}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+command -v mpirun >/dev/null || { echo "distributed-match.sh: mpirun is required (scripts/install-deps.sh)" >&2; exit 1; }
+if [ -n "${RKPM_BIN:-}" ]; then
+  rkpm=$(realpath "$RKPM_BIN")
+else
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build" --target rkpm -j"$(nproc)" >/dev/null
+  rkpm=$(cd "$build" && pwd)/src/app/rkpm
+fi
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
+git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
+load=$(cut -d' ' -f1 /proc/loadavg)
+export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
+
+# summary_value DIR KEY: a top-level value of DIR/summary.json.
+summary_value() { sed -n "s/^  \"$2\": *\"\{0,1\}\([^\",]*\)\"\{0,1\},\{0,1\}$/\1/p" "$1/summary.json"; }
+# run RANKS SCENE DIR [MAX_STEPS]: one run (RANKS = 1: one process without mpirun).
+run() {
+  local ranks=$1 scene=$2 dir=$3 steps=${4:-}
+  local args=(run "$scene" --out "$dir" --quiet)
+  [ -n "$steps" ] && args+=(--max-steps "$steps")
+  if [ "$ranks" = 1 ]; then
+    "$rkpm" "${args[@]}" >"$dir.log" 2>&1
+  else
+    mpirun --allow-run-as-root --oversubscribe -np "$ranks" -x OMP_NUM_THREADS -x OMP_WAIT_POLICY "$rkpm" "${args[@]}" \
+      >"$dir.log" 2>&1
+  fi
+}
+
+csv=$out/distributed-match.csv
+echo "scene,mode,ranks,particles,steps,converged,wall_time,largest_difference,largest_displacement,relative_difference" >"$csv"
+for scene in $scenes; do
+  file=$here/examples/$scene
+  mode=$(sed -n 's/^mode *= *"\([a-z]*\)".*/\1/p' "$file")
+  steps=""
+  [ "$mode" = dynamic ] && steps=$dynamic_steps
+  name=$(echo "$scene" | tr '/.' '__')
+  (cd "$(dirname "$file")" && run 1 "$file" "$scratch/${name}_1" "$steps")
+  for ranks in 1 $ranks_list; do
+    dir=$scratch/${name}_$ranks
+    [ "$ranks" = 1 ] || (cd "$(dirname "$file")" && run "$ranks" "$file" "$dir" "$steps")
+    compared=$("$rkpm" compare "$scratch/${name}_1" "$dir")
+    field() { echo "$compared" | sed -n "s/.*\"$1\": *\([^,}]*\).*/\1/p"; }
+    converged=$(summary_value "$dir" converged)
+    echo "$scene,$mode,$ranks,$(summary_value "$dir" total_particles),$(summary_value "$dir" steps),${converged:-n/a},$(summary_value "$dir" wall_time),$(field largest_difference),$(field largest_displacement),$(field relative_difference)" >>"$csv"
+    tail -1 "$csv"
+  done
+done
+
+md=$out/distributed-match.md
+[ "$out" = "$here/docs/figures" ] && md=$scratch/distributed-match.md
+awk -F, -v rev="$revision" -v load="$load" -v dyn="$dynamic_steps" '
+NR == 1 { next }
+{ rows[NR] = $0; last = NR }
+END {
+  printf "Measured by `bash scripts/distributed-match.sh` at %s, one thread per rank on 2 cores (4 ranks oversubscribe them), load average %s before the runs. Relaxations run to convergence; dynamic scenes %d steps. The difference is the largest distance between a particle'\''s final positions in the two runs over the one-process run'\''s largest displacement (`rkpm compare`).\n\n", rev, load, dyn
+  print "| scene | mode | ranks | particles | steps | converged | wall time [s] | difference / largest displacement |"
+  print "|---|---|---:|---:|---:|---|---:|---:|"
+  for (i = 2; i <= last; i++) {
+    split(rows[i], f, ",")
+    printf "| `%s` | %s | %d | %d | %d | %s | %.1f | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[7], (f[3] == 1 ? "(reference)" : sprintf("%.2g", f[10]))
+  }
+}' "$csv" >"$md"
+cat "$md"
+doc=$here/docs/distributed.md
+if [ "$out" = "$here/docs/figures" ]; then
+  awk -v md="$md" '
+    /<!-- BEGIN GENERATED: scripts\/distributed-match.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; skip = 1; next }
+    skip && /<!-- END GENERATED/ { skip = 0 }
+    !skip { print }' "$doc" >"$scratch/doc.md" && cp "$scratch/doc.md" "$doc"
+  echo "distributed-match: updated $doc"
+fi
+echo "distributed-match: wrote $csv"
