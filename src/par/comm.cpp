@@ -151,6 +151,11 @@ std::vector<Vec3> gather_owned(const Comm& comm, const std::vector<Vec3>& field,
   return whole;
 }
 
+std::vector<double> gather_owned(const Comm& comm, const std::vector<double>& field, Index begin, Index end) {
+  if (!comm.parallel()) return field;
+  return comm.gather(std::vector<double>(field.begin() + begin, field.begin() + end));
+}
+
 bool Session::launched_by_mpi() {
   for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "MPI_LOCALNRANKS"})
     if (std::getenv(name) != nullptr) return true;

@@ -339,33 +339,15 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   return s;
 }
 
-namespace {
-// The refusal of a feature that does not run on more than one rank yet, at its line.
-[[noreturn]] void refuse_distributed(const std::string& file, int line, const std::string& what, int ranks) {
-  throw SetupError(fmt::format("{}:{}: {} does not run on more than one rank yet (this run has {}); run the scene as "
-                               "one process (without mpirun). Distributed: every material, term and report, FIRE "
-                               "(with nested levels) and explicit dynamics with the wave-speed stable step, without "
-                               "mass scaling (docs/distributed.md)",
-                               file, line, what, ranks));
-}
-}  // namespace
-
-void check_distributable(const scene::Scene& scene, const par::Comm& comm) {
-  if (!comm.parallel()) return;
-  const auto& in = scene.integrator;
-  if (in.flag("mass_scaling"))
-    refuse_distributed(in.file(), in.line("mass_scaling"), "[integrator] mass_scaling", comm.size());
-  if (in.choice("stable_step") == "measured")
-    refuse_distributed(in.file(), in.line("stable_step"), "[integrator] stable_step = \"measured\"", comm.size());
-}
-
 void check_distributable_terms(const scene::Scene& scene, const World& world) {
   if (!world.comm->parallel()) return;
   for (std::size_t k = 0; k < world.terms.size(); ++k)
     if (!world.terms[k]->distributed()) {
       const auto& term = scene.terms[k].params;
-      refuse_distributed(term.file(), term.table_line(), fmt::format("[[term]] type = \"{}\"", scene.terms[k].type()),
-                         world.comm->size());
+      throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
+                                   "has {}); run the scene as one process (without mpirun), or see "
+                                   "docs/adding-a-term.md for what a term needs to run distributed",
+                                   term.file(), term.table_line(), scene.terms[k].type(), world.comm->size()));
     }
 }
 

@@ -167,7 +167,12 @@ void Integrator::scale_masses() {
   std::vector<std::vector<double>> steps(world_.bodies.size());
   std::vector<double> all;
   for (std::size_t b = 0; b < steps.size(); ++b) {
-    particle_wave_steps(*world_.bodies[b], steps[b]);
+    const Body& body = *world_.bodies[b];
+    particle_wave_steps(body, steps[b]);
+    // Distributed: a rank knows the steps of its own particles (it holds their F); every
+    // rank gathers them all, so that the median and the inertia of every particle,
+    // ghosts included, are those of one process.
+    steps[b] = par::gather_owned(*world_.comm, steps[b], body.owned_begin(), body.owned_end());
     all.insert(all.end(), steps[b].begin(), steps[b].end());
   }
   if (all.empty()) return;

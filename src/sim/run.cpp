@@ -124,7 +124,6 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   std::unique_ptr<World> world;
   try {
-    check_distributable(scene, comm);
     world = build_world(scene, comm);
     check_distributable_terms(scene, *world);
   } catch (const SetupError& e) {

@@ -19,16 +19,16 @@ void transformed_forces(World& world) {
   for (auto& bp : world.bodies) bp->constraints.transform_forces(bp->force);
 }
 
-// sum over every body of |y_I|^2, each body's sum from zero and added in body order
-// (see kinetic_energy in world.cpp).
-double squared_norm(const std::vector<std::vector<Vec3>>& y) {
+// sum over every body of |y_I|^2 at the particles this rank owns, each body's sum from
+// zero, reduced over the ranks, and added in body order (see kinetic_energy in world.cpp).
+double squared_norm(const World& world, const std::vector<std::vector<Vec3>>& y) {
   double total = 0.0;
-  for (const auto& body_y : y) {
-    const auto n = static_cast<Index>(body_y.size());
+  for (std::size_t b = 0; b < y.size(); ++b) {
+    const Body& body = *world.bodies[b];
     double body_sum = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : body_sum)
-    for (Index i = 0; i < n; ++i) body_sum += body_y[i].squaredNorm();
-    total += body_sum;
+    for (Index i = body.owned_begin(); i < body.owned_end(); ++i) body_sum += y[b][i].squaredNorm();
+    total += world.comm->sum(body_sum);
   }
   return total;
 }
@@ -52,8 +52,12 @@ FrequencyEstimate largest_frequency(World& world, int max_iterations, double tol
     const Body& body = *world.bodies[b];
     d0[b] = body.d;
     kept_force[b] = body.force;
+    // The start vector is drawn in the one-rank numbering: every rank count iterates alike.
+    std::vector<Vec3> drawn(body.size());
+    for (auto& v : drawn) v = Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
     y[b].resize(body.size());
-    for (auto& v : y[b]) v = Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
+    for (std::size_t i = 0; i < body.size(); ++i)
+      y[b][i] = drawn[body.original_id.empty() ? i : static_cast<std::size_t>(body.original_id[i])];
     drop_constrained(body, y[b]);
     for (double h : body.spacing) shortest_spacing = std::min(shortest_spacing, h);
   }
@@ -69,23 +73,24 @@ FrequencyEstimate largest_frequency(World& world, int max_iterations, double tol
   for (std::size_t b = 0; b < nb; ++b) f0[b] = world.bodies[b]->force;
 
   FrequencyEstimate estimate;
-  double previous = 0.0, norm_y = std::sqrt(squared_norm(y));
+  double previous = 0.0, norm_y = std::sqrt(squared_norm(world, y));
   std::vector<Vec3> scratch_velocity;
   for (int it = 0; it < max_iterations && norm_y > 0.0; ++it) {  // norm_y = 0: nothing can move
     // The displacement direction u = M^-1/2 y / |y|, scaled so that its largest
     // particle displacement is delta.
+    // Distributed: over the owned particles (the forces pull the ghosts' d), reduced.
     double largest = 0.0;
     for (std::size_t b = 0; b < nb; ++b) {
       const Body& body = *world.bodies[b];
-      for (std::size_t i = 0; i < body.size(); ++i)
+      for (Index i = body.owned_begin(); i < body.owned_end(); ++i)
         largest = std::max(largest, y[b][i].norm() / std::sqrt(body.inertia[i]));
     }
-    const double scale = delta / largest;
+    const double scale = delta / world.comm->max(largest);
     for (std::size_t b = 0; b < nb; ++b) {
       Body& body = *world.bodies[b];
-      const auto n = static_cast<Index>(body.size());
 #pragma omp parallel for schedule(static)
-      for (Index i = 0; i < n; ++i) body.d[i] = d0[b][i] + scale * y[b][i] / std::sqrt(body.inertia[i]);
+      for (Index i = body.owned_begin(); i < body.owned_end(); ++i)
+        body.d[i] = d0[b][i] + scale * y[b][i] / std::sqrt(body.inertia[i]);
       scratch_velocity.assign(body.size(), Vec3::Zero());
       body.constraints.impose(body.d, scratch_velocity);
     }
@@ -94,15 +99,14 @@ FrequencyEstimate largest_frequency(World& world, int max_iterations, double tol
     // A y = M^-1/2 K M^-1/2 y = -(f(d0 + scale M^-1/2 y) - f0) / (scale sqrt(m)).
     for (std::size_t b = 0; b < nb; ++b) {
       const Body& body = *world.bodies[b];
-      const auto n = static_cast<Index>(body.size());
 #pragma omp parallel for schedule(static)
-      for (Index i = 0; i < n; ++i)
+      for (Index i = body.owned_begin(); i < body.owned_end(); ++i)
         y[b][i] = -(body.force[i] - f0[b][i]) / (scale * std::sqrt(body.inertia[i]));
       drop_constrained(body, y[b]);
     }
     // |A y| / |y| tends to the dominant |lambda| and is not below the Rayleigh quotient
     // of a symmetric tangent: the conservative of the two measures.
-    const double norm_ay = std::sqrt(squared_norm(y));
+    const double norm_ay = std::sqrt(squared_norm(world, y));
     if (!(norm_ay > 0.0)) {  // no stiffness along y (or a force that is not finite)
       previous = 0.0;
       break;

@@ -301,6 +301,36 @@ TEST(DistributedForce, JitteredMooneyRivlinBlockMatchesOneRank) {
   check_distributed_force(kMooneyRivlinBlock);
 }
 
+// A term that has not said it runs distributed (Term::distributed) stops a run on more
+// than one rank at its [[term]] line, and passes on one rank.
+TEST(DistributedForce, ATermThatIsNotDistributedIsRefusedAtItsLine) {
+  struct OneProcessTerm final : Term {
+    std::string name() const override { return "one_process"; }
+    void add_forces(World&) override {}
+  };
+  const std::string text = std::string(kMooneyRivlinBlock) +
+                           "[[term]]\ntype = \"body_force\"\nbody = \"block\"\nacceleration = [0.0, 0.0, -1.0]\n";
+  const auto scene = scene::parse_scene(text, "distributed.toml");
+  for (const par::Comm* comm : {&par::Comm::self(), &par::Comm::world()}) {
+    auto world = build_world(scene, *comm);
+    EXPECT_NO_THROW(check_distributable_terms(scene, *world));  // body_force runs distributed
+    world->terms[0] = std::make_unique<OneProcessTerm>();
+    if (!comm->parallel()) {
+      EXPECT_NO_THROW(check_distributable_terms(scene, *world));
+      continue;
+    }
+    try {
+      check_distributable_terms(scene, *world);
+      ADD_FAILURE() << "not refused";
+    } catch (const SetupError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("distributed.toml:20: [[term]] type = \"body_force\" does not run on more than one rank"),
+                std::string::npos)
+          << what;
+    }
+  }
+}
+
 // Pull copies the owner's value to every ghost; push adds each ghost's value to its owner once.
 TEST(GhostExchange, PullCopiesOwnersValuesAndPushAddsEachGhostToItsOwnerOnce) {
   const par::Comm& comm = par::Comm::world();

@@ -240,18 +240,39 @@ TEST(DistributedRun, RestartOnTheSameRankCountContinuesBitForBit) {
   }
 }
 
-TEST(DistributedRun, WhatDoesNotRunDistributedIsRefusedOnceWithTheLine) {
-  const fs::path dir = shared_dir("sag_refused");
-  const std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"relax\"\nmass_scaling = true");
+// A scene that cannot be set up fails alike on every rank: rank 0 alone reports it.
+TEST(DistributedRun, ASetUpErrorIsReportedOnceWithTheLine) {
+  const fs::path dir = shared_dir("adhesion_refused");
+  std::string text = read_text(fs::path(RKPM_SOURCE_DIR) / "examples/adhesion/adhesion.toml");
+  text = replaced(text, "kappa = 1e-11", "kappa = 1e-11\nzeta = -1e3\nzeta_layer = \"inner\"");
   const Outcome d = run(text, dir / "two", world());
   EXPECT_EQ(d.code, kBadInput);
   if (world().root()) {
-    EXPECT_NE(d.log.find("[integrator] mass_scaling does not run on more than one rank"), std::string::npos) << d.log;
-    EXPECT_NE(d.log.find("sag.toml:"), std::string::npos) << d.log;
+    EXPECT_NE(d.log.find("zeta_layer = \"inner\": expected \"all\""), std::string::npos) << d.log;
+    EXPECT_NE(d.log.find("sag.toml:"), std::string::npos) << d.log;  // run() names every scene sag.toml
   } else {
     EXPECT_EQ(d.log, "");  // rank 0 speaks for the run
   }
   EXPECT_FALSE(fs::exists(dir / "two" / "frames.pvd"));
+}
+
+// Mass scaling (a median over every particle of every rank) and the measured stable
+// step (a power iteration over the whole world): the sag relaxation with both lands on
+// the one-process state in the same number of steps.
+TEST(DistributedRun, MassScalingAndTheMeasuredStableStepFollowTheOneRankPath) {
+  const fs::path dir = shared_dir("sag_scaled");
+  const std::string text =
+      replaced(sag_scene(), "mode = \"relax\"", "mode = \"relax\"\nmass_scaling = true\nstable_step = \"measured\"");
+  const double error = run_both_ways(text, dir);
+  if (!world().root()) return;
+  std::cout << "sag relaxation with mass scaling and the measured stable step, " << world().size()
+            << " ranks against 1: " << error << " of the largest displacement; steps " << summary_value(dir / "two", "steps")
+            << "\n";
+  EXPECT_LT(error, 1e-10);
+  EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
+  EXPECT_NE(summary_value(dir / "two", "converged").find("true"), std::string::npos);
+  const double dt_one = std::stod(summary_value(dir / "one", "stable_dt"));
+  EXPECT_NEAR(std::stod(summary_value(dir / "two", "stable_dt")), dt_one, 1e-9 * dt_one);
 }
 
 TEST(DistributedRun, ABlowUpStopsEveryRankWithTheSameDiagnosis) {

@@ -65,6 +65,7 @@ class Comm {
 // [begin, end): the ranges tile the particles in rank order (par/partition.hpp), so the
 // ranks' slices, concatenated in rank order, are the field in particle order. Collective.
 std::vector<Vec3> gather_owned(const Comm& comm, const std::vector<Vec3>& field, Index begin, Index end);
+std::vector<double> gather_owned(const Comm& comm, const std::vector<double>& field, Index begin, Index end);
 
 // MPI's lifetime in a program: initialised (MPI_THREAD_FUNNELED: OpenMP threads never
 // call MPI) when an MPI launcher started the process, finalised at the end of main.

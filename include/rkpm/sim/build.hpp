@@ -23,13 +23,11 @@ struct SetupError : std::runtime_error {
 // renumbered so that this rank owns one range of it, and its ghost layer is built.
 std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm = par::Comm::world());
 
-// What this version runs on more than one rank: every material's internal force (the
-// force pass is distributed for every model), FIRE or explicit dynamics, essential
-// boundary conditions, and the terms that say so (Term::distributed). A run on more
-// than one rank of a scene using anything else is refused with a SetupError naming
-// the scene's line, so that no rank count silently changes the physics: the scene's
-// own settings before anything is built, the terms once built. Both pass on one rank.
-void check_distributable(const scene::Scene& scene, const par::Comm& comm);
+// Every material, the integrators and every term of the catalog run on more than one
+// rank. A term that does not say so (Term::distributed: a new term before its
+// exchanges are written) makes a run on more than one rank stop with a SetupError
+// naming the scene's line, so that no rank count silently changes the physics. Passes
+// on one rank.
 void check_distributable_terms(const scene::Scene& scene, const World& world);
 
 // The particle cloud of one body, as build_world makes it (generator or imported mesh).
