@@ -105,6 +105,9 @@ void validate_frame(const Frame& frame) {
     validate_field(f, "point field", "particle", points.size());
   }
   for (const PointField& f : frame.field_data) validate_field(f, "field-data array", "tuple", 0);
+  if (!frame.duplicate_points.empty() && frame.duplicate_points.size() != points.size())
+    throw FrameError(fmt::format("output frame: {} duplicate-point flags for {} points", frame.duplicate_points.size(),
+                                 points.size()));
   validate_unique_names(frame.point_fields, "point field");
   validate_unique_names(frame.field_data, "field-data array");
 }

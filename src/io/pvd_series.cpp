@@ -56,6 +56,8 @@ std::string pvtu_text(const Frame& piece, const std::string& basename, int index
   for (const PointField& f : piece.point_fields)
     text += fmt::format("      <PDataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\"/>\n", f.name,
                         f.components);
+  if (!piece.duplicate_points.empty())
+    text += "      <PDataArray type=\"UInt8\" Name=\"vtkGhostType\" NumberOfComponents=\"1\"/>\n";
   text += "    </PPointData>\n    <PPoints>\n      <PDataArray type=\"Float64\" NumberOfComponents=\"3\"/>\n"
           "    </PPoints>\n";
   for (int r = 0; r < ranks; ++r) text += fmt::format("    <Piece Source=\"{}\"/>\n", piece_file_name(basename, index, r));

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <vtkCellArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
@@ -81,6 +82,14 @@ void write_vtu(const std::filesystem::path& path, const Frame& frame) {
   set_cells(grid, frame.cells);
   for (const PointField& field : frame.point_fields) grid->GetPointData()->AddArray(to_vtk_array(field));
   for (const PointField& field : frame.field_data) grid->GetFieldData()->AddArray(to_vtk_array(field));
+  if (!frame.duplicate_points.empty()) {
+    vtkNew<vtkUnsignedCharArray> ghost;
+    ghost->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghost->SetNumberOfTuples(static_cast<vtkIdType>(frame.duplicate_points.size()));
+    for (std::size_t i = 0; i < frame.duplicate_points.size(); ++i)
+      ghost->SetValue(static_cast<vtkIdType>(i), frame.duplicate_points[i] ? vtkDataSetAttributes::DUPLICATEPOINT : 0);
+    grid->GetPointData()->AddArray(ghost);
+  }
 
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetInputData(grid);

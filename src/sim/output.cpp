@@ -115,15 +115,18 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     b.output_halo.pull(records.data(), kRecord);
     point_of.assign(b.size(), -1);
     std::int64_t next = offset;
+    frame.duplicate_points.resize(static_cast<std::size_t>(offset), 0);
     for (Index J = begin; J < end; ++J) {
       append(records.data() + kRecord * J);
       point_of[static_cast<std::size_t>(J)] = next++;
     }
+    frame.duplicate_points.resize(static_cast<std::size_t>(next), 0);
     for (const auto& group : b.output_halo.ghosts_by_owner())
       for (Index J : group) {
         append(records.data() + kRecord * J);
         point_of[static_cast<std::size_t>(J)] = next++;
       }
+    frame.duplicate_points.resize(static_cast<std::size_t>(next), 1);
     add_cells(b, [&](Index J) { return point_of[static_cast<std::size_t>(J)]; });
     offset = next;
   }

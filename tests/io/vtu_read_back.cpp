@@ -2,6 +2,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -71,7 +72,13 @@ ReadBack read_with(const std::filesystem::path& path) {
   out.cells.offsets = to_int64(grid->GetCells()->GetOffsetsArray());
   out.cells.connectivity = to_int64(grid->GetCells()->GetConnectivityArray());
   for (int a = 0; a < grid->GetPointData()->GetNumberOfArrays(); ++a) {
-    PointField f = to_field(grid->GetPointData()->GetArray(a));
+    vtkDataArray* array = grid->GetPointData()->GetArray(a);
+    if (array->GetName() && std::string(array->GetName()) == vtkDataSetAttributes::GhostArrayName()) {
+      for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+        out.ghost_type.push_back(static_cast<std::uint8_t>(array->GetComponent(t, 0)));
+      continue;
+    }
+    PointField f = to_field(array);
     out.point_fields[f.name] = f;
   }
   for (int a = 0; a < grid->GetFieldData()->GetNumberOfArrays(); ++a) {

@@ -17,6 +17,7 @@ struct ReadBack {
   CellBlock cells;
   std::map<std::string, PointField> point_fields;
   std::map<std::string, PointField> field_data;
+  std::vector<std::uint8_t> ghost_type;  // vtkGhostType per point; empty if the frame has none
 };
 
 // Throws std::runtime_error if VTK reports an error reading `path`. A .pvtu (a

@@ -68,7 +68,9 @@ Outcome run(const std::string& text, const fs::path& out, const par::Comm& comm,
   return o;
 }
 
-// Final positions by (body_id, particle_id), read through VTK as ParaView would (.vtu or .pvtu).
+// Final positions by (body_id, particle_id), read through VTK as ParaView would (.vtu or
+// .pvtu). A distributed frame flags its halo copies as vtkGhostType duplicates: every
+// particle is unflagged in exactly one piece, and a flagged copy sits where its owner's does.
 using ParticleKey = std::pair<std::int64_t, std::int64_t>;
 std::map<ParticleKey, Vec3> final_positions(const fs::path& dir, double* largest_displacement) {
   const auto entries = io::read_pvd(dir / "frames.pvd");
@@ -76,11 +78,29 @@ std::map<ParticleKey, Vec3> final_positions(const fs::path& dir, double* largest
   const auto& body = frame.point_fields.at("body_id").values;
   const auto& ids = frame.point_fields.at("particle_id").values;
   const auto& u = frame.point_fields.at("displacement").values;
-  std::map<ParticleKey, Vec3> p;
+  const bool pieces = fs::path(entries.back().file).extension() == ".pvtu";
+  EXPECT_EQ(frame.ghost_type.size(), pieces ? frame.points.size() : 0u);
+  std::map<ParticleKey, Vec3> p, copies;
   for (std::size_t i = 0; i < frame.points.size(); ++i) {
-    p[{static_cast<std::int64_t>(body[i]), static_cast<std::int64_t>(ids[i])}] = frame.points[i];
+    const ParticleKey key{static_cast<std::int64_t>(body[i]), static_cast<std::int64_t>(ids[i])};
+    if (!frame.ghost_type.empty() && frame.ghost_type[i] != 0) {
+      EXPECT_EQ(frame.ghost_type[i], 1) << "DUPLICATEPOINT";
+      copies[key] = frame.points[i];
+      continue;
+    }
+    EXPECT_TRUE(p.emplace(key, frame.points[i]).second) << "particle " << key.second << " unflagged twice";
     if (largest_displacement)
       *largest_displacement = std::max(*largest_displacement, Vec3(u[3 * i], u[3 * i + 1], u[3 * i + 2]).norm());
+  }
+  if (pieces) {
+    EXPECT_GT(copies.size(), 0u) << "the pieces share nodes";
+  }
+  for (const auto& [key, x] : copies) {
+    const auto owner = p.find(key);
+    if (owner == p.end())
+      ADD_FAILURE() << "a halo copy of particle " << key.second << " whose owner wrote none";
+    else
+      EXPECT_EQ(owner->second, x);
   }
   return p;
 }

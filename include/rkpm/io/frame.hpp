@@ -44,6 +44,11 @@ struct Frame {
   CellBlock cells;
   std::vector<PointField> point_fields;       // one tuple per point
   std::vector<PointField> field_data;         // global values (any tuple count), e.g. TimeValue
+  // A piece of a distributed frame: 1 for each point that is a copy of another piece's
+  // (the halo), 0 for the piece's own; empty for a whole frame. Written as VTK's
+  // vtkGhostType array (DUPLICATEPOINT), so that ParaView's filters count every
+  // particle once over the pieces.
+  std::vector<std::uint8_t> duplicate_points;
 };
 
 // Any structural problem with a frame: sizes, names, cell indices.
