@@ -10,7 +10,8 @@
 # Usage: bash scripts/distributed-match.sh [BUILD_DIR] [OUT_DIR]
 #   environment: RKPM_RANKS (default "2 4"), RKPM_DYNAMIC_STEPS (default 200),
 #                RKPM_SCENES (default: every example scene, paths under examples/),
-#                RKPM_BIN (a built rkpm to use instead of building BUILD_DIR).
+#                RKPM_BIN (a built rkpm to use instead of building BUILD_DIR),
+#                RKPM_TABLE_ONLY=1 (no runs: the table again from OUT/distributed-match.csv).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
@@ -21,7 +22,9 @@ scenes=${RKPM_SCENES:-sag/sag.toml rbc/rbc.toml rbc/control.toml spread_cell/spr
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 command -v mpirun >/dev/null || { echo "distributed-match.sh: mpirun is required (scripts/install-deps.sh)" >&2; exit 1; }
-if [ -n "${RKPM_BIN:-}" ]; then
+if [ -n "${RKPM_TABLE_ONLY:-}" ]; then
+  rkpm=""
+elif [ -n "${RKPM_BIN:-}" ]; then
   rkpm=$(realpath "$RKPM_BIN")
 else
   cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -51,37 +54,43 @@ run() {
 }
 
 csv=$out/distributed-match.csv
-echo "scene,mode,ranks,particles,steps,converged,wall_time,largest_difference,largest_displacement,relative_difference" >"$csv"
-for scene in $scenes; do
-  file=$here/examples/$scene
-  mode=$(sed -n 's/^mode *= *"\([a-z]*\)".*/\1/p' "$file")
-  steps=""
-  [ "$mode" = dynamic ] && steps=$dynamic_steps
-  name=$(echo "$scene" | tr '/.' '__')
-  (cd "$(dirname "$file")" && run 1 "$file" "$scratch/${name}_1" "$steps")
-  for ranks in 1 $ranks_list; do
-    dir=$scratch/${name}_$ranks
-    [ "$ranks" = 1 ] || (cd "$(dirname "$file")" && run "$ranks" "$file" "$dir" "$steps")
-    compared=$("$rkpm" compare "$scratch/${name}_1" "$dir")
-    field() { echo "$compared" | sed -n "s/.*\"$1\": *\([^,}]*\).*/\1/p"; }
-    converged=$(summary_value "$dir" converged)
-    echo "$scene,$mode,$ranks,$(summary_value "$dir" total_particles),$(summary_value "$dir" steps),${converged:-n/a},$(summary_value "$dir" wall_time),$(field largest_difference),$(field largest_displacement),$(field relative_difference)" >>"$csv"
-    tail -1 "$csv"
+if [ -z "${RKPM_TABLE_ONLY:-}" ]; then
+  echo "# revision $revision, load $load" >"$csv"
+  echo "scene,mode,ranks,particles,steps,converged,wall_time,largest_difference,largest_displacement,relative_difference" >>"$csv"
+  for scene in $scenes; do
+    file=$here/examples/$scene
+    mode=$(sed -n 's/^mode *= *"\([a-z]*\)".*/\1/p' "$file")
+    steps=""
+    [ "$mode" = dynamic ] && steps=$dynamic_steps
+    name=$(echo "$scene" | tr '/.' '__')
+    (cd "$(dirname "$file")" && run 1 "$file" "$scratch/${name}_1" "$steps")
+    for ranks in 1 $ranks_list; do
+      dir=$scratch/${name}_$ranks
+      [ "$ranks" = 1 ] || (cd "$(dirname "$file")" && run "$ranks" "$file" "$dir" "$steps")
+      compared=$("$rkpm" compare "$scratch/${name}_1" "$dir")
+      field() { echo "$compared" | sed -n "s/.*\"$1\": *\([^,}]*\).*/\1/p"; }
+      converged=$(summary_value "$dir" converged)
+      echo "$scene,$mode,$ranks,$(summary_value "$dir" total_particles),$(summary_value "$dir" steps),${converged:-n/a},$(summary_value "$dir" wall_time),$(field largest_difference),$(field largest_displacement),$(field relative_difference)" >>"$csv"
+      tail -1 "$csv"
+    done
   done
-done
+
+fi
+# The runs' revision and load, recorded in the CSV's first line.
+read -r revision load < <(sed -n '1s/^# revision \(.*\), load \(.*\)$/\1 \2/p' "$csv" | sed 's/ with uncommitted changes/+/')
 
 md=$out/distributed-match.md
 [ "$out" = "$here/docs/figures" ] && md=$scratch/distributed-match.md
 awk -F, -v rev="$revision" -v load="$load" -v dyn="$dynamic_steps" '
-NR == 1 { next }
+/^#/ || /^scene,/ { next }
 { rows[NR] = $0; last = NR }
 END {
   printf "Measured by `bash scripts/distributed-match.sh` at %s, one thread per rank on 2 cores (4 ranks oversubscribe them), load average %s before the runs. Relaxations run to convergence; dynamic scenes %d steps. The difference is the largest distance between a particle'\''s final positions in the two runs over the one-process run'\''s largest displacement (`rkpm compare`).\n\n", rev, load, dyn
-  print "| scene | mode | ranks | particles | steps | converged | wall time [s] | difference / largest displacement |"
-  print "|---|---|---:|---:|---:|---|---:|---:|"
-  for (i = 2; i <= last; i++) {
+  print "| scene | mode | ranks | particles | steps | converged | wall time [s] | largest displacement [m] | largest difference [m] | difference / largest displacement |"
+  print "|---|---|---:|---:|---:|---|---:|---:|---:|---:|"
+  for (i = 3; i <= last; i++) {
     split(rows[i], f, ",")
-    printf "| `%s` | %s | %d | %d | %d | %s | %.1f | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[7], (f[3] == 1 ? "(reference)" : sprintf("%.2g", f[10]))
+    printf "| `%s` | %s | %d | %d | %d | %s | %.1f | %.3g | %s | %s |\n", f[1], f[2], f[3], f[4], f[5], f[6], f[7], f[9], (f[3] == 1 ? "(reference)" : sprintf("%.2g", f[8])), (f[3] == 1 ? "" : sprintf("%.2g", f[10]))
   }
 }' "$csv" >"$md"
 cat "$md"

@@ -120,7 +120,8 @@ int main(int argc, char** argv) {
     std::ostream silent(nullptr);
     std::ostream& out = speaks ? std::cout : silent;
     std::ostream& err = speaks ? std::cerr : silent;
-    const auto estimate = rkpm::sim::estimate_run(scene);
+    const auto& world = rkpm::par::Comm::world();
+    const auto estimate = rkpm::sim::estimate_run(scene, world.size(), world.node_size());
     rkpm::sim::print_estimate(out, scene, estimate, options.limits, options.out_dir);
     try {
       // Without a set-up the step is unknown: the disk must hold at least the first and last frames.

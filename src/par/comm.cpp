@@ -140,6 +140,14 @@ void Comm::abort(int code) const {
   std::exit(code);
 }
 
+std::string Comm::first_error(const std::string& message) const {
+  if (!parallel()) return message;
+  const auto failed = gather(static_cast<std::int64_t>(message.empty() ? 0 : 1));
+  for (std::size_t r = 0; r < failed.size(); ++r)
+    if (failed[r] != 0) return broadcast(message, static_cast<int>(r));
+  return {};
+}
+
 std::vector<Vec3> gather_owned(const Comm& comm, const std::vector<Vec3>& field, Index begin, Index end) {
   if (!comm.parallel()) return field;
   std::vector<double> mine;
@@ -170,6 +178,11 @@ Session::Session(int& argc, char**& argv) {
   Comm& comm = mutable_world();
   MPI_Comm_rank(MPI_COMM_WORLD, &comm.rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &comm.size_);
+  // The ranks that share this rank's memory (its node): MPI-3's shared-memory split.
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, comm.rank_, MPI_INFO_NULL, &node);
+  MPI_Comm_size(node, &comm.node_size_);
+  MPI_Comm_free(&node);
 }
 
 Session::~Session() {
@@ -178,6 +191,7 @@ Session::~Session() {
   Comm& comm = mutable_world();
   comm.rank_ = 0;
   comm.size_ = 1;
+  comm.node_size_ = 1;
 }
 
 }  // namespace rkpm::par

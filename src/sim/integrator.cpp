@@ -399,9 +399,8 @@ void Integrator::check_state() {
         b.x[first].z(), what[why], J, b.v[first].norm(), stable_dt_);
     break;
   }
-  const auto failed = world_.comm->gather(static_cast<std::int64_t>(diagnosis.empty() ? 0 : 1));
-  for (std::size_t r = 0; r < failed.size(); ++r)
-    if (failed[r] != 0) throw BlowUp(world_.comm->broadcast(diagnosis, static_cast<int>(r)));
+  diagnosis = world_.comm->first_error(diagnosis);
+  if (!diagnosis.empty()) throw BlowUp(diagnosis);
   min_J_ = world_.comm->min(min_J);
 }
 

@@ -80,7 +80,7 @@ std::string key_at(const scene::ParamSet& p, const std::string& key) {
   return fmt::format("{}:{}: [{}] {}", p.file(), p.line(key), p.section(), key);
 }
 
-BodyEstimate estimate_body(const scene::BodySpec& spec) {
+BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
   BodyEstimate e;
   e.name = spec.name();
   e.generator = spec.generator();
@@ -161,8 +161,9 @@ BodyEstimate estimate_body(const scene::BodySpec& spec) {
   e.gradient_entries = e.particles * support_count(support + cell_reach, grid.spacing, grid.extent);
   const double gradient_entry_bytes =
       4.0 + (spec.rk.choice("gradient_precision") == "float" ? 12.0 : 24.0) + kGradientEntryMargin;
-  e.memory_bytes = e.particles * kStateBytes + e.gradient_entries * gradient_entry_bytes +
-                   e.interpolation_entries * kInterpolationEntryBytes;
+  // Distributed: a rank's rows are its share of the operators; the state stays whole.
+  e.memory_bytes = e.particles * kStateBytes + (e.gradient_entries * gradient_entry_bytes +
+                                                e.interpolation_entries * kInterpolationEntryBytes) / ranks;
   return e;
 }
 
@@ -197,11 +198,13 @@ std::optional<double> least(std::optional<double> a, std::optional<double> b) {
 
 }  // namespace
 
-RunEstimate estimate_run(const scene::Scene& scene) {
+RunEstimate estimate_run(const scene::Scene& scene, int ranks, int ranks_on_node) {
   RunEstimate r;
+  r.ranks = std::max(ranks, 1);
+  r.ranks_on_node = std::max(ranks_on_node, 1);
   double points = 0.0, elements = 0.0;
   for (const auto& spec : scene.bodies) {
-    r.bodies.push_back(estimate_body(spec));
+    r.bodies.push_back(estimate_body(spec, r.ranks));
     r.particles += r.bodies.back().particles;
     r.memory_bytes += r.bodies.back().memory_bytes;
     points += r.bodies.back().particles;
@@ -265,16 +268,21 @@ void check_memory(const RunEstimate& estimate, const RunLimits& limits) {
           b.size_key, b.name, b.gradient_entries, b.particles, std::numeric_limits<Index>::max()));
   }
   const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
-  if (memory && estimate.memory_bytes > *memory) {
+  if (memory && estimate.node_memory_bytes() > *memory) {
     const auto largest = std::max_element(estimate.bodies.begin(), estimate.bodies.end(),
                                           [](const auto& a, const auto& b) { return a.memory_bytes < b.memory_bytes; });
+    const std::string node = estimate.ranks_on_node > 1
+                                 ? fmt::format(" for the {} ranks on this node, {} each", estimate.ranks_on_node,
+                                               human_bytes(estimate.memory_bytes))
+                                 : std::string();
     throw PreflightError(fmt::format(
-        "{}: the run needs about {} of memory ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
-        "expected a coarser cloud{}",
-        largest->size_key, human_bytes(estimate.memory_bytes), estimate.particles, largest->name,
+        "{}: the run needs about {} of memory{} ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
+        "expected a coarser cloud{}{}",
+        largest->size_key, human_bytes(estimate.node_memory_bytes()), node, estimate.particles, largest->name,
         human_bytes(largest->memory_bytes), human_bytes(*memory),
         limits.memory_bytes ? "given by --memory-limit" : "available to this process",
-        limits.memory_bytes ? " or a larger --memory-limit" : ""));
+        limits.memory_bytes ? " or a larger --memory-limit" : "",
+        estimate.ranks_on_node > 1 ? " or fewer ranks per node" : ""));
   }
 }
 
@@ -309,7 +317,11 @@ void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstim
     out << fmt::format("{:<16} {:<10} {:>12.0f} {:>16.3g} {:>12}\n", b.name, b.generator, b.particles,
                        b.gradient_entries + b.interpolation_entries, human_bytes(b.memory_bytes));
   out << fmt::format("run: {:.0f} particles, about {} of memory", estimate.particles,
-                     human_bytes(estimate.memory_bytes));
+                     human_bytes(estimate.node_memory_bytes()));
+  if (estimate.ranks > 1)
+    out << fmt::format(" on this node ({} ranks of {}, {} each: a rank keeps its share of the operators and the "
+                       "whole state)",
+                       estimate.ranks_on_node, estimate.ranks, human_bytes(estimate.memory_bytes));
   const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
   out << (memory ? fmt::format(" (limit {})\n", human_bytes(*memory)) : std::string(" (limit unknown)\n"));
   out << fmt::format("output: {} per frame (uncompressed), {}; up to {}", human_bytes(estimate.frame_bytes),

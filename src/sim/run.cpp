@@ -115,11 +115,18 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
 
   // Everything that can fail on user input happens before the output directory exists,
   // and what the scene will cost is checked before anything large is allocated.
-  const RunEstimate estimate = estimate_run(scene);
+  // Each rank reads its own available memory: the verdict is agreed on, so that no rank
+  // goes on to wait for one that stopped.
+  const RunEstimate estimate = estimate_run(scene, comm.size(), comm.node_size());
+  std::string refusal;
   try {
     check_memory(estimate, options.limits);
   } catch (const PreflightError& e) {
-    log << "error: " << e.what() << "\n";
+    refusal = e.what();
+  }
+  refusal = comm.first_error(refusal);
+  if (!refusal.empty()) {
+    log << "error: " << refusal << "\n";
     return kBadInput;
   }
   std::unique_ptr<World> world;

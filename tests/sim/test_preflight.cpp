@@ -118,6 +118,34 @@ TEST(Preflight, MemoryLimitNamesEstimateAndLimit) {
   EXPECT_NO_THROW(check_memory(estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits));
 }
 
+// A distributed run: a rank builds its share of the operator rows and keeps the whole
+// state, and the ranks of one node share its memory.
+TEST(Preflight, RanksDivideTheOperatorsAndShareTheNodesMemory) {
+  const auto scene = scene::parse_scene(scene_with_cloud(kBlock), "t.toml");
+  const double one = estimate_run(scene, 1, 1).memory_bytes;
+  const double two = estimate_run(scene, 2, 1).memory_bytes;
+  const double four = estimate_run(scene, 4, 1).memory_bytes;
+  EXPECT_LT(four, two);
+  EXPECT_LT(two, one);
+  // one - four = (3/4) operators, one - two = (1/2) operators: whatever the state costs.
+  EXPECT_NEAR((one - four) / (one - two), 1.5, 1e-12);
+
+  const RunEstimate node = estimate_run(scene, 4, 4);
+  EXPECT_EQ(node.memory_bytes, four);
+  EXPECT_EQ(node.node_memory_bytes(), 4.0 * four);
+  RunLimits limits;
+  limits.memory_bytes = 2.0 * four;  // room for two of the four ranks
+  EXPECT_NO_THROW(check_memory(estimate_run(scene, 4, 1), limits));
+  try {
+    check_memory(node, limits);
+    ADD_FAILURE() << "four ranks on the node do not fit";
+  } catch (const PreflightError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("for the 4 ranks on this node"), std::string::npos) << what;
+    EXPECT_NE(what.find("or fewer ranks per node"), std::string::npos) << what;
+  }
+}
+
 TEST(Preflight, OutputLargerThanTheFreeSpaceIsRefusedByEvery) {
   const std::string dynamic = R"([scene]
 name = "frames"

@@ -29,6 +29,8 @@ class Comm {
   int size() const { return size_; }
   bool parallel() const { return size_ > 1; }
   bool root() const { return rank_ == 0; }
+  // The ranks on this rank's node, itself included: they share its memory.
+  int node_size() const { return node_size_; }
 
   // Reductions over the ranks, the same on every rank.
   double sum(double value) const;
@@ -43,6 +45,9 @@ class Comm {
   std::vector<double> gather(const std::vector<double>& values) const;
   // Rank `from`'s text on every rank.
   std::string broadcast(const std::string& text, int from) const;
+  // The `message` of the lowest rank whose message is not empty, on every rank (empty
+  // when none has one): a check that may fail on some ranks only, agreed on by all.
+  std::string first_error(const std::string& message) const;
 
   // Point-to-point exchange: send[p] goes to rank p, recv[p] comes from rank p (its
   // size is sent first). Empty messages are not sent. Every rank must call it.
@@ -59,6 +64,7 @@ class Comm {
   friend class Session;
   int rank_ = 0;
   int size_ = 1;
+  int node_size_ = 1;
 };
 
 // The whole of a per-particle field on every rank, from each rank's own range

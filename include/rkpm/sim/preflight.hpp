@@ -33,13 +33,19 @@ struct BodyEstimate {
   double elements = 0.0;
   double gradient_entries = 0.0;  // smoothed-gradient operator entries (SCNI rows)
   double interpolation_entries = 0.0;
-  double memory_bytes = 0.0;      // peak during set-up and run
+  double memory_bytes = 0.0;      // peak during set-up and run, on one rank
 };
 
 struct RunEstimate {
   std::vector<BodyEstimate> bodies;
   double particles = 0.0;
-  double memory_bytes = 0.0;
+  // A distributed run: each rank builds the operator rows of its share of the particles
+  // and (in this version) keeps the whole-length state arrays; the ranks on one node
+  // share its memory.
+  int ranks = 1;
+  int ranks_on_node = 1;
+  double memory_bytes = 0.0;          // one rank's peak
+  double node_memory_bytes() const { return memory_bytes * ranks_on_node; }
   double frame_bytes = 0.0;           // one frame, uncompressed
   std::optional<double> frames;       // at most this many frames (one per `every` up to t_end, at
                                       // most one per step); empty when the scene does not bound them
@@ -60,7 +66,7 @@ struct PreflightError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-RunEstimate estimate_run(const scene::Scene& scene);
+RunEstimate estimate_run(const scene::Scene& scene, int ranks = 1, int ranks_on_node = 1);
 
 // The memory this process may still use [bytes]: the least of MemAvailable, the cgroup's
 // memory.max minus its usage, and the address-space limit (RLIMIT_AS) less what the
@@ -71,7 +77,7 @@ std::optional<double> available_disk(const std::filesystem::path& dir);
 
 // Throws PreflightError when the estimate does not fit: more particles or entries than
 // the 32-bit particle index can address, more memory than `limits.memory_bytes` (or the
-// machine's). Called before anything is built.
+// machine's) for the ranks on this node. Called before anything is built.
 void check_memory(const RunEstimate& estimate, const RunLimits& limits);
 
 // Frames a run writes: with the step `dt` of a dynamic run known (after set-up), one per
