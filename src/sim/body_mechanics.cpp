@@ -171,10 +171,17 @@ double shear_modulus(const Body& body, Index L) {
   return std::visit([L](const auto& material) { return material.shear_modulus(L); }, body.material);
 }
 
+std::vector<Index> one_rank_order(const Body& body) {
+  std::vector<Index> order(body.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    order[body.original_id.empty() ? i : static_cast<std::size_t>(body.original_id[i])] = static_cast<Index>(i);
+  return order;
+}
+
 double mean_shear_modulus(const Body& body) {
   double weighted = 0.0, volume = 0.0;
-  for (std::size_t i = 0; i < body.size(); ++i) {
-    weighted += body.cloud.volume[i] * shear_modulus(body, static_cast<Index>(i));
+  for (Index i : one_rank_order(body)) {
+    weighted += body.cloud.volume[i] * shear_modulus(body, i);
     volume += body.cloud.volume[i];
   }
   return weighted / volume;

@@ -33,12 +33,9 @@ std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", 
 // round-off difference flips the director of a particle at the centre).
 Vec3 centroid(const Body& body) {
   const auto& c = body.cloud;
-  std::vector<std::size_t> order(c.size());
-  for (std::size_t i = 0; i < c.size(); ++i)
-    order[body.original_id.empty() ? i : static_cast<std::size_t>(body.original_id[i])] = i;
   Vec3 sum = Vec3::Zero();
   double v = 0.0;
-  for (std::size_t i : order) {
+  for (Index i : one_rank_order(body)) {
     sum += c.volume[i] * c.X[i];
     v += c.volume[i];
   }

@@ -121,11 +121,13 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
       point_of[static_cast<std::size_t>(J)] = next++;
     }
     frame.duplicate_points.resize(static_cast<std::size_t>(next), 0);
-    for (const auto& group : b.output_halo.ghosts_by_owner())
-      for (Index J : group) {
-        append(records.data() + kRecord * J);
-        point_of[static_cast<std::size_t>(J)] = next++;
-      }
+    // The halo serves the mesh cells only: a frame of points (one vertex cell each) has none.
+    if (cells == CellOutput::Mesh)
+      for (const auto& group : b.output_halo.ghosts_by_owner())
+        for (Index J : group) {
+          append(records.data() + kRecord * J);
+          point_of[static_cast<std::size_t>(J)] = next++;
+        }
     frame.duplicate_points.resize(static_cast<std::size_t>(next), 1);
     add_cells(b, [&](Index J) { return point_of[static_cast<std::size_t>(J)]; });
     offset = next;

@@ -226,19 +226,23 @@ RunEstimate estimate_run(const scene::Scene& scene, int ranks, int ranks_on_node
   return r;
 }
 
-std::optional<double> available_memory() {
+std::optional<double> available_node_memory() {
   std::optional<double> limit = proc_status_kb("/proc/meminfo", "MemAvailable:");
   if (const auto max = read_number_file("/sys/fs/cgroup/memory.max")) {
     const double used = read_number_file("/sys/fs/cgroup/memory.current").value_or(0.0);
     limit = least(limit, *max - used);
   }
-  rlimit as{};
-  if (getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
-    const double mapped = proc_status_kb("/proc/self/status", "VmSize:").value_or(kAddressSpaceBaseline);
-    limit = least(limit, static_cast<double>(as.rlim_cur) - std::max(mapped, kAddressSpaceBaseline));
-  }
   return limit;
 }
+
+std::optional<double> available_address_space() {
+  rlimit as{};
+  if (getrlimit(RLIMIT_AS, &as) != 0 || as.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  const double mapped = proc_status_kb("/proc/self/status", "VmSize:").value_or(kAddressSpaceBaseline);
+  return static_cast<double>(as.rlim_cur) - std::max(mapped, kAddressSpaceBaseline);
+}
+
+std::optional<double> available_memory() { return least(available_node_memory(), available_address_space()); }
 
 std::optional<double> available_disk(const std::filesystem::path& dir) {
   std::error_code ec;
@@ -261,29 +265,41 @@ void check_memory(const RunEstimate& estimate, const RunLimits& limits) {
           "{}: body '{}' would have {:.4g} particles, more than the {} a 32-bit particle index can address; "
           "expected a count below that (a coarser cloud)",
           b.size_key, b.name, b.particles, std::numeric_limits<Index>::max()));
-    if (b.gradient_entries > kIndexLimit)
+    // A rank stores the entries of its own rows.
+    if (b.gradient_entries / estimate.ranks > kIndexLimit)
       throw PreflightError(fmt::format(
-          "{}: body '{}' would have about {:.3g} operator entries ({:.4g} particles), more than the {} a 32-bit "
-          "index can address; expected a coarser cloud or a smaller [body.rk] support",
-          b.size_key, b.name, b.gradient_entries, b.particles, std::numeric_limits<Index>::max()));
+          "{}: body '{}' would have about {:.3g} operator entries ({:.4g} particles) on a rank, more than the {} a "
+          "32-bit index can address; expected a coarser cloud, a smaller [body.rk] support or more ranks",
+          b.size_key, b.name, b.gradient_entries / estimate.ranks, b.particles, std::numeric_limits<Index>::max()));
   }
-  const auto memory = limits.memory_bytes ? limits.memory_bytes : available_memory();
-  if (memory && estimate.node_memory_bytes() > *memory) {
-    const auto largest = std::max_element(estimate.bodies.begin(), estimate.bodies.end(),
-                                          [](const auto& a, const auto& b) { return a.memory_bytes < b.memory_bytes; });
-    const std::string node = estimate.ranks_on_node > 1
-                                 ? fmt::format(" for the {} ranks on this node, {} each", estimate.ranks_on_node,
-                                               human_bytes(estimate.memory_bytes))
-                                 : std::string();
-    throw PreflightError(fmt::format(
-        "{}: the run needs about {} of memory{} ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
-        "expected a coarser cloud{}{}",
-        largest->size_key, human_bytes(estimate.node_memory_bytes()), node, estimate.particles, largest->name,
-        human_bytes(largest->memory_bytes), human_bytes(*memory),
-        limits.memory_bytes ? "given by --memory-limit" : "available to this process",
-        limits.memory_bytes ? " or a larger --memory-limit" : "",
-        estimate.ranks_on_node > 1 ? " or fewer ranks per node" : ""));
+  // The node's memory (and the job's cgroup) holds every rank on the node; the address-
+  // space limit (ulimit -v) holds each process alone. One process: the least of them.
+  const auto node_memory = limits.memory_bytes ? limits.memory_bytes : available_node_memory();
+  const auto address_space = limits.memory_bytes ? std::nullopt : available_address_space();
+  // The binding limit: the node's (all its ranks together) or one process's.
+  double needed = 0.0, available = 0.0;
+  std::string on_node;
+  if (node_memory && estimate.node_memory_bytes() > *node_memory) {
+    needed = estimate.node_memory_bytes();
+    available = *node_memory;
+    if (estimate.ranks_on_node > 1)
+      on_node = fmt::format(" for the {} ranks on this node, {} each", estimate.ranks_on_node,
+                            human_bytes(estimate.memory_bytes));
+  } else if (address_space && estimate.memory_bytes > *address_space) {
+    needed = estimate.memory_bytes;
+    available = *address_space;
+  } else {
+    return;
   }
+  const auto largest = std::max_element(estimate.bodies.begin(), estimate.bodies.end(),
+                                        [](const auto& a, const auto& b) { return a.memory_bytes < b.memory_bytes; });
+  throw PreflightError(fmt::format(
+      "{}: the run needs about {} of memory{} ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
+      "expected a coarser cloud{}{}",
+      largest->size_key, human_bytes(needed), on_node, estimate.particles, largest->name,
+      human_bytes(largest->memory_bytes), human_bytes(available),
+      limits.memory_bytes ? "given by --memory-limit" : "available to this process",
+      limits.memory_bytes ? " or a larger --memory-limit" : "", on_node.empty() ? "" : " or fewer ranks per node"));
 }
 
 double frames_expected(const scene::Scene& scene, const RunEstimate& estimate, std::optional<double> dt,

@@ -175,18 +175,29 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   // The step is known once the integrator has started: the frames a dynamic run writes
   // must fit the output folder before the first is written.
   integrator.initialize();
+  // Each rank checks its own view of the output folder (a node-local disk, free space
+  // read at another moment): the verdicts are agreed on, so that no rank goes on alone.
+  std::string refused_disk, refused_folder;
   try {
     check_disk(scene, estimate, frames_expected(scene, estimate, integrator.dt(), options.max_steps_override),
                options.limits, options.out_dir);
   } catch (const PreflightError& e) {
-    log << "error: " << e.what() << "\n";
+    refused_disk = e.what();
+  }
+  refused_disk = comm.first_error(refused_disk);
+  if (!refused_disk.empty()) {
+    log << "error: " << refused_disk << "\n";
     return kBadInput;
   }
   try {
     std::filesystem::create_directories(options.out_dir);
   } catch (const std::filesystem::filesystem_error& e) {
-    log << fmt::format("error: cannot create the output folder '{}': {}\n", options.out_dir.string(),
-                       e.code().message());
+    refused_folder = fmt::format("cannot create the output folder '{}': {}", options.out_dir.string(),
+                                 e.code().message());
+  }
+  refused_folder = comm.first_error(refused_folder);
+  if (!refused_folder.empty()) {
+    log << "error: " << refused_folder << "\n";
     return kOutputFailed;
   }
   const auto checkpoint_path = rank_file(options.out_dir / "checkpoint.bin", comm);

@@ -104,6 +104,11 @@ struct Body {
 // x = X + d.
 void update_positions(Body& body);
 
+// The body's particles in their one-rank numbering (the identity on one rank): a sum over
+// every particle taken in this order has the same bits for any rank count, as the
+// quantities derived from whole-body sums must (a centroid, a mean modulus).
+std::vector<Index> one_rank_order(const Body& body);
+
 // F at every integration point, the director gradient where the Frank term needs it,
 // the first Piola-Kirchhoff stress, and body.force = -f_int (the internal force).
 // Distributed: at the points this rank owns, after pulling the ghosts' displacements

@@ -72,6 +72,10 @@ RunEstimate estimate_run(const scene::Scene& scene, int ranks = 1, int ranks_on_
 // memory.max minus its usage, and the address-space limit (RLIMIT_AS) less what the
 // process maps already. Empty when none is known.
 std::optional<double> available_memory();
+// Its parts: what the node (and the job's cgroup) has for all the processes on it, and
+// what the address-space limit leaves this process alone.
+std::optional<double> available_node_memory();
+std::optional<double> available_address_space();
 // Free space of the file system that holds `dir` (or its nearest existing parent).
 std::optional<double> available_disk(const std::filesystem::path& dir);
 

@@ -40,12 +40,13 @@ double LennardJones::stiffness(double r) const {
 
 namespace {
 
-// n_I = beta V_I; beta = 0 means one molecule per particle on average (N / total volume).
+// n_I = beta V_I; beta = 0 means one molecule per particle on average (N / total volume,
+// summed in the one-rank order: the same bits on any rank count).
 std::vector<double> molecules_of(const Body& body, double beta) {
   const auto& V = body.cloud.volume;
   if (beta == 0.0) {
     double total = 0.0;
-    for (double v : V) total += v;
+    for (Index i : one_rank_order(body)) total += V[i];
     beta = static_cast<double>(V.size()) / total;
   }
   std::vector<double> n(V.size());
