@@ -53,11 +53,9 @@ FrequencyEstimate largest_frequency(World& world, int max_iterations, double tol
     d0[b] = body.d;
     kept_force[b] = body.force;
     // The start vector is drawn in the one-rank numbering: every rank count iterates alike.
-    std::vector<Vec3> drawn(body.size());
-    for (auto& v : drawn) v = Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
     y[b].resize(body.size());
-    for (std::size_t i = 0; i < body.size(); ++i)
-      y[b][i] = drawn[body.original_id.empty() ? i : static_cast<std::size_t>(body.original_id[i])];
+    for (Index i : one_rank_order(body))
+      y[b][i] = Vec3(random.symmetric_unit(), random.symmetric_unit(), random.symmetric_unit());
     drop_constrained(body, y[b]);
     for (double h : body.spacing) shortest_spacing = std::min(shortest_spacing, h);
   }
