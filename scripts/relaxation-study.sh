@@ -10,7 +10,7 @@
 # Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS...]
 #   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles; the two largest take
 #   about an hour each with plain FIRE on 2 cores). RKPM_VARIANTS selects variants
-#   (default "fire measured nested mass_scaling"). A run whose directory holds a
+#   (default "fire measured nested mass_scaling"; "fire2" is FIRE 2.0). A run whose directory holds a
 #   summary.json is kept, so the study can be completed in several sittings.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -33,7 +33,8 @@ variant_keys() {
     measured) echo 'stable_step = "measured"' ;;
     nested) echo 'nested_levels = [0.375, 0.625]' ;;
     mass_scaling) echo 'mass_scaling = true' ;;
-    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling)" >&2; exit 2 ;;
+    fire2) echo 'relax_method = "fire2"' ;;
+    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling, fire2)" >&2; exit 2 ;;
   esac
 }
 

@@ -2,8 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace rkpm::sim {
+
+FireParameters FireParameters::named(const std::string& method) {
+  if (method == "fire") return bitzek2006();
+  if (method == "fire2") return guenole2020();
+  throw std::invalid_argument("unknown relax_method '" + method + "' (expected \"fire\" or \"fire2\")");
+}
 
 FireStep Fire::update(World& world, double dt, double dt_max) {
   // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body (and rank).
@@ -41,21 +48,27 @@ FireStep Fire::update(World& world, double dt, double dt_max) {
       b.constraints.impose(b.d, b.v);
     }
     result.dissipated = kinetic_before - kinetic_energy(world);
-    if (++positive_steps_ > kMinPositive) {
-      result.dt = std::min(dt * kIncrease, dt_max);
-      alpha_ *= kAlphaShrink;
+    if (++positive_steps_ > p_.n_delay) {
+      result.dt = std::min(dt * p_.f_inc, dt_max);
+      alpha_ *= p_.f_alpha;
     }
-  } else {
-    // Uphill: stop; all the kinetic energy is dissipated.
-    result.dissipated = kinetic_energy(world);
-    for (auto& bp : world.bodies) {
-      Body& b = *bp;
-      std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
-      b.constraints.impose(b.d, b.v);
-    }
-    positive_steps_ = 0;
-    alpha_ = kAlphaStart;
-    result.dt = dt * kDecrease;
+    return result;
+  }
+  // Uphill: stop; all the kinetic energy is dissipated.
+  result.dissipated = kinetic_energy(world);
+  positive_steps_ = 0;
+  if (!(p_.initial_delay && world.step < p_.n_delay)) {
+    alpha_ = p_.alpha_start;
+    result.dt = std::max(dt * p_.f_dec, p_.dt_min_fraction * dt_max);
+  }
+  if (p_.half_step_back) {
+    result.step_back = true;
+    return result;
+  }
+  for (auto& bp : world.bodies) {
+    Body& b = *bp;
+    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
+    b.constraints.impose(b.d, b.v);
   }
   return result;
 }

@@ -30,7 +30,8 @@ double EnergyLedger::relative_error() const {
   return std::abs(balance) / scale;
 }
 
-Integrator::Integrator(World& world, IntegratorSettings settings) : world_(world), settings_(settings) {}
+Integrator::Integrator(World& world, IntegratorSettings settings)
+    : world_(world), settings_(settings), fire_(settings.fire) {}
 
 // The smallest wave-speed step spacing / c over the bodies at the current state.
 double Integrator::bodies_wave_dt() const {
@@ -255,6 +256,42 @@ void Integrator::fire(StepBook& book) {
   const FireStep r = fire_.update(world_, dt_, settings_.dt_safety * stable_dt_);
   dt_ = r.dt;
   book.fire_dissipated = r.dissipated;
+  if (r.step_back) step_back(book);
+}
+
+// FIRE 2.0's inertia correction of an uphill step: the free coordinates go back by
+// dt v / 2 (dt the shrunk step, as in Guenole et al. 2020, Algorithm 2), the velocities
+// stop, the constrained coordinates follow their constraints, and the forces are
+// evaluated at the new state. The ledger books the jump: the loads do the work W along
+// it (the trapezoidal rule of their power with the jump as the velocity over a unit
+// time), and what the stored energy does not gain of it is dissipated:
+// external += W, dissipated += W - (stored after - stored before).
+void Integrator::step_back(StepBook& book) {
+  const double stored_before = stored_energy();
+  jump_.resize(world_.bodies.size());
+  for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
+    Body& b = *world_.bodies[k];
+    jump_[k] = b.d;  // the coordinates before the jump
+#pragma omp parallel for schedule(static)
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * dt_ * b.v[i];
+    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
+    b.constraints.impose(b.d, b.v);
+#pragma omp parallel for schedule(static)
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = b.d[i] - jump_[k][i];
+  }
+  const double power_before = power_of_terms();
+  for (auto& bp : world_.bodies) update_positions(*bp);
+  forces_and_accelerations();
+  const double power_after = power_of_terms();
+  for (auto& bp : world_.bodies) {
+    Body& b = *bp;
+    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
+    b.constraints.impose(b.d, b.v);
+  }
+  const double work = 0.5 * (power_before + power_after);
+  ledger_.external += work;
+  book.fire_dissipated += work - (stored_energy() - stored_before);
+  ++step_backs_;
 }
 
 // The director of each LCE body moves at fixed positions (Eq. 5-8): the active power
@@ -423,6 +460,7 @@ StateRecord Integrator::save_state() const {
   s.put_real("stable_step.calibration", calibration_);
   s.put_real("motion_dt", motion_dt_);
   s.put_integer("motion_limited_steps", motion_limited_steps_);
+  s.put_integer("fire.step_backs", step_backs_);
   s.put_integer("force_evaluations", force_evaluations_);
   s.put_integer("stable_step.calibrations", calibrations_);
   s.put_vectors("centre", {centre_});
@@ -441,11 +479,13 @@ void Integrator::load_state(const StateRecord& s) {
   term_power_ = s.real("term_power");
   active_power_ = s.real("active_power");
   support_power_ = s.real("support_power");
-  fire_ = Fire(s.real("fire.alpha"), s.integer("fire.positive_steps"));
+  fire_ = Fire(settings_.fire, s.real("fire.alpha"), s.integer("fire.positive_steps"));
   settings_.domain_size = s.real("domain_size");
   calibration_ = s.real("stable_step.calibration");
   motion_dt_ = s.real("motion_dt");
   motion_limited_steps_ = s.integer("motion_limited_steps");
+  // Absent from checkpoints written before FIRE 2.0 existed (their runs had none).
+  step_backs_ = s.has("fire.step_backs") ? s.integer("fire.step_backs") : 0;
   force_evaluations_ = s.integer("force_evaluations");
   calibrations_ = s.integer("stable_step.calibrations");
   centre_ = s.vectors("centre", 1).front();

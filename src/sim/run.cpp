@@ -321,6 +321,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("stable_dt", integrator.stable_dt());
   json.set("force_evaluations", integrator.force_evaluations());
   if (!relax) json.set("motion_limited_steps", integrator.motion_limited_steps());
+  if (relax) json.set("fire_step_backs", integrator.step_backs());
   if (settings.measured_stable_step) {
     json.set("stable_step_calibration", integrator.stable_step_calibration());
     json.set("stable_step_calibrations", integrator.calibrations());

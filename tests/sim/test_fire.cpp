@@ -61,7 +61,7 @@ TEST(Fire, MixingSteersTheVelocityTowardTheForceWithoutLengtheningIt) {
   const FireStep r = fire.update(*world, 1e-3, 1.0);
 
   // v' = (1 - alpha) v + alpha |v| F / |F|, written out here.
-  const double alpha = Fire::kAlphaStart, vn = norm(v0), fn = norm(b.force);
+  const double alpha = FireParameters::bitzek2006().alpha_start, vn = norm(v0), fn = norm(b.force);
   for (std::size_t i = 0; i < 20; ++i) {
     const Vec3 expected = (1.0 - alpha) * v0[i] + alpha * vn * b.force[i] / fn;
     EXPECT_NEAR((b.v[i] - expected).norm(), 0.0, 1e-14 * vn) << i;
@@ -75,7 +75,7 @@ TEST(Fire, MixingSteersTheVelocityTowardTheForceWithoutLengtheningIt) {
   EXPECT_GE(r.dissipated, 0.0);  // equal masses: |v'| <= |v| is kinetic energy removed
   // The first downhill step changes neither the step nor alpha.
   EXPECT_EQ(r.dt, 1e-3);
-  EXPECT_EQ(fire.alpha(), Fire::kAlphaStart);
+  EXPECT_EQ(fire.alpha(), FireParameters::bitzek2006().alpha_start);
   EXPECT_EQ(fire.positive_steps(), 1);
 
   // A velocity parallel to the force keeps its length and direction.
@@ -90,18 +90,18 @@ TEST(Fire, StepGrowsAndAlphaShrinksAfterNMinDownhillStepsUpToDtMax) {
   Body& b = *world->bodies.front();
   Fire fire;
   const double dt_max = 2e-3;
-  double dt = 1e-3, expected_alpha = Fire::kAlphaStart;
+  double dt = 1e-3, expected_alpha = FireParameters::bitzek2006().alpha_start;
   for (int k = 1; k <= 20; ++k) {
     for (std::size_t i = 0; i < 3; ++i) {  // downhill every time
       b.force[i] = Vec3(1.0, 2.0, static_cast<double>(i));
       b.v[i] = 0.5 * b.force[i];
     }
     const double next = fire.update(*world, dt, dt_max).dt;
-    if (k <= Fire::kMinPositive) {
+    if (k <= FireParameters::bitzek2006().n_delay) {
       EXPECT_EQ(next, dt) << "step " << k << ": no growth within the first N_min downhill steps";
     } else {
-      EXPECT_EQ(next, std::min(dt * Fire::kIncrease, dt_max)) << "step " << k;
-      expected_alpha *= Fire::kAlphaShrink;
+      EXPECT_EQ(next, std::min(dt * FireParameters::bitzek2006().f_inc, dt_max)) << "step " << k;
+      expected_alpha *= FireParameters::bitzek2006().f_alpha;
     }
     EXPECT_EQ(fire.alpha(), expected_alpha) << "step " << k;
     EXPECT_EQ(fire.positive_steps(), k);
@@ -109,7 +109,7 @@ TEST(Fire, StepGrowsAndAlphaShrinksAfterNMinDownhillStepsUpToDtMax) {
   }
   std::printf("after 20 downhill steps: dt = %.4g (dt_max %.4g), alpha = %.5f\n", dt, dt_max, fire.alpha());
   EXPECT_EQ(dt, dt_max);  // 1.1^15 > 2: the ceiling is reached and kept
-  EXPECT_LT(fire.alpha(), Fire::kAlphaStart);
+  EXPECT_LT(fire.alpha(), FireParameters::bitzek2006().alpha_start);
 }
 
 TEST(Fire, UphillStepStopsHalvesTheStepAndResetsAlpha) {
@@ -124,22 +124,60 @@ TEST(Fire, UphillStepStopsHalvesTheStepAndResetsAlpha) {
     }
     dt = fire.update(*world, dt, 1.0).dt;
   }
-  ASSERT_LT(fire.alpha(), Fire::kAlphaStart);
+  ASSERT_LT(fire.alpha(), FireParameters::bitzek2006().alpha_start);
   ASSERT_EQ(fire.positive_steps(), 10);
 
   for (std::size_t i = 0; i < 4; ++i) b.v[i] = -0.7 * b.force[i];  // uphill
   const double ke = kinetic_energy(*world);
   const FireStep r = fire.update(*world, dt, 1.0);
   for (const auto& v : b.v) EXPECT_EQ(v, Vec3::Zero());
-  EXPECT_EQ(r.dt, Fire::kDecrease * dt);
-  EXPECT_EQ(fire.alpha(), Fire::kAlphaStart);
+  EXPECT_EQ(r.dt, FireParameters::bitzek2006().f_dec * dt);
+  EXPECT_EQ(fire.alpha(), FireParameters::bitzek2006().alpha_start);
   EXPECT_EQ(fire.positive_steps(), 0);
   EXPECT_EQ(r.dissipated, ke);  // all of the kinetic energy
 
   // At rest the power is zero: FIRE treats it as uphill (nothing to mix).
   const FireStep rest = fire.update(*world, r.dt, 1.0);
-  EXPECT_EQ(rest.dt, Fire::kDecrease * r.dt);
+  EXPECT_EQ(rest.dt, FireParameters::bitzek2006().f_dec * r.dt);
   EXPECT_EQ(rest.dissipated, 0.0);
+}
+
+// FIRE 2.0's constants (Guenole et al. 2020, LAMMPS's defaults): 20 downhill steps before
+// the step grows; on an uphill step after the first 20 steps of the run the step shrinks,
+// not below 0.02 dt_max, alpha returns to 0.25, and the velocities are left for the
+// caller's half step back; within the first 20 steps the step and alpha are kept.
+TEST(Fire2, DelaysTheGrowthStepsBackOnUphillStepsAndKeepsItsStepAtTheStart) {
+  const FireParameters p = FireParameters::guenole2020();
+  ASSERT_EQ(p.n_delay, 20);
+  auto world = point_masses(3);
+  Body& b = *world->bodies.front();
+  Fire fire(p);
+  const double dt_max = 0.1;
+  double dt = 0.01;
+  for (int k = 1; k <= 25; ++k) {
+    for (std::size_t i = 0; i < 3; ++i) b.v[i] = b.force[i] = Vec3(1.0, 0.5, 0.0);
+    const double next = fire.update(*world, dt, dt_max).dt;
+    EXPECT_EQ(next, k <= 20 ? dt : std::min(dt * p.f_inc, dt_max)) << "downhill step " << k;
+    dt = next;
+    ++world->step;
+  }
+  // Uphill inside the initial delay: stopped, but dt and alpha kept.
+  const double alpha = fire.alpha();
+  world->step = 5;
+  for (std::size_t i = 0; i < 3; ++i) b.v[i] = -b.force[i];
+  FireStep r = fire.update(*world, dt, dt_max);
+  EXPECT_TRUE(r.step_back);
+  EXPECT_EQ(r.dt, dt);
+  EXPECT_EQ(fire.alpha(), alpha);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_EQ(b.v[i], -b.force[i]);  // left for the step back
+  // Uphill later: dt shrinks by f_dec, alpha resets, and the floor holds.
+  world->step = 100;
+  r = fire.update(*world, dt, dt_max);
+  EXPECT_EQ(r.dt, p.f_dec * dt);
+  EXPECT_EQ(fire.alpha(), p.alpha_start);
+  EXPECT_EQ(fire.positive_steps(), 0);
+  r = fire.update(*world, 0.021 * dt_max, dt_max);
+  EXPECT_DOUBLE_EQ(r.dt, 0.02 * dt_max);
 }
 
 // Velocity Verlet + FIRE, as the integrator's relaxation mode does it, on the well

@@ -1,7 +1,8 @@
 // The relaxation accelerators of docs/relaxation.md: nested iteration (the scene at a
-// coarser resolution, the state carried to the finer cloud by the RK approximation) and
-// mass scaling. Both must reach the same equilibrium as plain FIRE: the masses and the
-// starting point of a static problem change the path, not the answer.
+// coarser resolution, the state carried to the finer cloud by the RK approximation),
+// mass scaling and FIRE 2.0. Each must reach the same equilibrium as plain FIRE: the
+// masses, the starting point and the velocity control of a static problem change the
+// path, not the answer.
 #include "rkpm/scene/resolution.hpp"
 #include "rkpm/sim/nested_iteration.hpp"
 #include "sim_fixtures.hpp"
@@ -26,6 +27,7 @@ relax_velocity_tol = 1e-12
 max_steps = 200000
 nested_levels = {levels}
 mass_scaling = {mass_scaling}
+relax_method = "{method}"
 [[body]]
 name = "block"
 density = 1000
@@ -54,9 +56,10 @@ surface = "all"
 pressure = -300
 )";
 
-std::string block_scene(const std::string& levels, bool mass_scaling) {
-  return testing::with(testing::with(kBlockOnRollers, "levels", levels), "mass_scaling",
-                       mass_scaling ? "true" : "false");
+std::string block_scene(const std::string& levels, bool mass_scaling, const std::string& method = "fire") {
+  return testing::with(testing::with(testing::with(kBlockOnRollers, "levels", levels), "mass_scaling",
+                                     mass_scaling ? "true" : "false"),
+                       "method", method);
 }
 
 struct Relaxation {
@@ -174,6 +177,26 @@ TEST(NestedIteration, NestedLevelsAndMassScalingReachThePlainFireEquilibrium) {
   EXPECT_LT(relative_difference(nested.u, plain.u), 1e-3);
   EXPECT_LT(relative_difference(scaled.u, plain.u), 1e-3);
   EXPECT_LT(relative_difference(both.u, plain.u), 1e-3);
+}
+
+// FIRE 2.0 (Guenole et al. 2020), whose uphill steps move the particles back by half a
+// step before they stop, reaches the same equilibrium as plain FIRE.
+TEST(Fire2, ReachesThePlainFireEquilibrium) {
+  testing::ScopedThreads one(1);
+  const Relaxation plain = relax(block_scene("[]", false));
+  auto sw = testing::build_from_text(block_scene("[]", false, "fire2"));
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  while (sw.world->step < 200000 && !integrator.converged()) integrator.step();
+  std::vector<Vec3> u;
+  physical_displacement(*sw.world->bodies.front(), u);
+  std::printf("10x6x6 block: plain FIRE %lld steps; FIRE 2.0 %lld steps with %lld step-backs; difference %.2e of "
+              "the largest displacement\n",
+              static_cast<long long>(plain.steps), static_cast<long long>(sw.world->step),
+              static_cast<long long>(integrator.step_backs()), relative_difference(u, plain.u));
+  ASSERT_TRUE(plain.converged && integrator.converged());
+  EXPECT_GT(integrator.step_backs(), 0);
+  EXPECT_LT(relative_difference(u, plain.u), 1e-3);
 }
 
 // Mass scaling lifts every particle's own step to the median and leaves the others.

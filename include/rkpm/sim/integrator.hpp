@@ -25,6 +25,7 @@ struct IntegratorSettings {
   double damping = 0.0;          // mass-proportional damping coefficient [1/s]
   double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
+  FireParameters fire;           // relax only: the FIRE variant (fire.hpp)
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
@@ -96,6 +97,8 @@ class Integrator {
   // step's calibrations): the cost measure of the relaxation study, which wall time
   // on a shared machine is not.
   std::int64_t force_evaluations() const { return force_evaluations_; }
+  // FIRE 2.0's uphill steps so far, each of which moved the positions back (step_back).
+  std::int64_t step_backs() const { return step_backs_; }
   // Steps so far that the motion limit shortened.
   std::int64_t motion_limited_steps() const { return motion_limited_steps_; }
 
@@ -121,6 +124,7 @@ class Integrator {
   void accelerations();
   void second_kick(double h);
   void fire(StepBook& book);
+  void step_back(StepBook& book);
   void director(StepBook& book);
   void ledger(const StepBook& book);
   void check(double kinetic_of_motion);  // throws BlowUp
@@ -155,6 +159,8 @@ class Integrator {
   std::int64_t calibrations_ = 0;
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
+  std::vector<std::vector<Vec3>> jump_;  // step_back's scratch: each body's coordinates before the jump
+  std::int64_t step_backs_ = 0;
   StepBook book_;
 };
 

@@ -31,6 +31,8 @@ void check_integrator(ParamSet& p) {
   if (p.has("t_end") && p.real("dt") > p.real("t_end")) {
     throw p.error("dt", "a time step no larger than t_end = " + format_value(p.real("t_end")) + " s");
   }
+  if (p.given("relax_method") && p.choice("mode") != "relax")
+    throw p.error("relax_method", "no relax_method unless mode = \"relax\"");
   if (p.flag("mass_scaling") && p.choice("mode") != "relax")
     throw p.error("mass_scaling", "false unless mode = \"relax\": a dynamic run's masses are physical");
   const auto& levels = p.reals("nested_levels");
@@ -75,6 +77,12 @@ ParamTable integrator_section() {
                 "of mu V summed over the bodies (shear modulus times volume)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
+      ParamSpec::choice("relax_method", {"fire", "fire2"}).defaults(std::string("fire"))
+          .help("relax mode: the FIRE variant. fire: Bitzek et al. 2006. fire2: FIRE 2.0 (Guenole et al. "
+                "2020) with LAMMPS's defaults: 20 downhill steps before the step grows, alpha_start 0.25, a "
+                "step floor of 0.02 dt_max, and an uphill step first moves the particles back by half a step "
+                "(one extra force evaluation per stop). Both reach the same equilibrium; docs/relaxation.md "
+                "compares their cost."),
       ParamSpec::boolean("mass_scaling").defaults(false)
           .help("relax mode: mass scaling. Particles whose own stable step (spacing over wave speed) is "
                 "below the median over the scene's particles are made heavier until it reaches the median, "
