@@ -13,12 +13,15 @@
 # OUT (docs/figures), otherwise OUT/distributed.md.
 # Usage: bash scripts/distributed-study.sh [BUILD_DIR] [OUT_DIR]
 #   environment: RKPM_CELLS (default 24: the 1-rank block is 25 x 25 x 25 particles),
-#                RKPM_REPEATS (default 3), RKPM_STEPS (default "40 240").
+#                RKPM_WEAK_CELLS (default 40: the weak case again at 41^3 particles per
+#                rank, whose operators no longer fit the shared 32 MB L3 cache of one
+#                rank's run; "" = none), RKPM_REPEATS (default 3), RKPM_STEPS (default "40 240").
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$here/build}
 out=${2:-$here/docs/figures}
 cells=${RKPM_CELLS:-24}
+read -r -a weak_cells <<<"${RKPM_WEAK_CELLS-40}"
 repeats=${RKPM_REPEATS:-3}
 read -r s1 s2 <<<"${RKPM_STEPS:-40 240}"
 mkdir -p "$out"
@@ -35,9 +38,11 @@ git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revisio
 cores=$(nproc)  # before OMP_NUM_THREADS is set: nproc honours it
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=active
 
-# scene NX: the block with NX x cells x cells cells, spacing 0.4 um.
+# scene NX [CELLS]: the block with NX x CELLS x CELLS cells (CELLS defaults to cells),
+# spacing 0.4 um.
 scene() {
-  local nx=$1 file=$scratch/block_$1.toml
+  local nx=$1 cells=${2:-$cells}
+  local file=$scratch/block_${nx}_$cells.toml
   cat >"$file" <<EOF
 [scene]
 name = "distributed_block"
@@ -90,8 +95,8 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] 
 csv=$out/distributed.csv
 echo "case,ranks,threads,particles,particles_per_rank,step_s,setup_s,ghosts_max,ghost_fraction,doubles_per_force_evaluation_max" >"$csv"
 measure() {
-  local name=$1 ranks=$2 threads=$3 nx=$4 file steps=() setups=() dir=$scratch/run
-  file=$(scene "$nx")
+  local name=$1 ranks=$2 threads=$3 nx=$4 cells=${5:-$cells} file steps=() setups=() dir=$scratch/run
+  file=$(scene "$nx" "$cells")
   for ((k = 0; k < repeats; k++)); do
     local w1 w2
     w1=$(run "$ranks" "$threads" "$file" "$s1" "$dir")
@@ -118,6 +123,11 @@ measure weak 2 1 $((2 * cells + 1))
 measure strong 1 1 $((2 * cells + 1))
 measure strong 2 1 $((2 * cells + 1))
 measure threads 1 2 $((2 * cells + 1))
+# The weak case at other sizes per rank (rows after the five above).
+for c in "${weak_cells[@]}"; do
+  measure weak 1 1 "$c" "$c"
+  measure weak 2 1 $((2 * c + 1)) "$c"
+done
 
 # The table and the model: into docs/distributed.md with the default OUT_DIR, else OUT_DIR/distributed.md.
 md=$out/distributed.md
@@ -132,12 +142,19 @@ END {
   for (i = 2; i <= last; i++)
     printf "| %s | %d x %d | %d | %d | %.2f | %.2f | %d | %.3f | %d |\n", c[i], r[i], th[i], n[i], npr[i], 1000 * st[i], su[i], g[i], gf[i], d[i]
   weak = st[2] / st[3]; strong = st[4] / st[5]
-  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%**. Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed: what the weak case loses is the two cores sharing the memory bandwidth the operators stream, not the exchange.\n", 100 * weak, n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
+  others = ""
+  for (i = 7; i + 1 <= last; i += 2)
+    others = others sprintf("; at %d particles per rank **%.0f %%**", npr[i], 100 * st[i] / st[i + 1])
+  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%** at %d particles per rank%s.", 100 * weak, npr[2], others
+  printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. What the weak case loses is not the exchange: two ranks share the L3 cache and the memory bandwidth that one rank has to itself, and the efficiency at the two sizes shows how much of that is the cache (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
   # neighbour: displacements in, forces out) plus the collective reductions.
-  tc = st[2] / n[2]
-  g0 = gf[3]; m0 = npr[3]; m = 1e6; P = 64
+  # Inputs from the largest weak size measured (the last pair of rows): a rank of 1e6
+  # particles is far out of cache, as that one is.
+  w1 = (last >= 8) ? last - 1 : 2; w2 = w1 + 1
+  tc = st[w1] / n[w1]; weak = st[w1] / st[w2]
+  g0 = gf[w2]; m0 = npr[w2]; m = 1e6; P = 64
   gm = g0 * (m0 / m) ^ (1.0 / 3.0)           # ghost fraction ~ surface / volume of a part
   bytes = 2 * 3 * 8 * gm * m                 # per step, in and out
   alpha = 2e-6; beta = 1.0 / 10e9; nb = 12; reductions = 12
@@ -148,6 +165,13 @@ END {
 }' "$csv" >"$md"
 cat "$md"
 
+# One line per weak size, each from its own rows.
+weak_plots=""
+for c in "$cells" "${weak_cells[@]}"; do
+  n=$(( (c + 1) ** 3 ))
+  awk -F, -v n="$n" '$1 == "weak" && $5 == n' "$csv" >"$scratch/weak_$n.csv"
+  weak_plots+="\"$scratch/weak_$n.csv\" using 2:(1000*\$6) with linespoints title \"weak: $n particles per rank\", "
+done
 gnuplot <<EOF
 set terminal pngcairo size 800,500
 set output "$out/distributed-scaling.png"
@@ -158,7 +182,7 @@ set xrange [0.5:2.5]
 set xtics 1
 set key top left
 set datafile separator ","
-plot "< awk -F, '\$1==\"weak\"' $csv" using 2:(1000*\$6) with linespoints title "weak: $(( (cells + 1) ** 3 )) particles per rank", \
+plot $weak_plots \
      "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$6) with linespoints title "strong: fixed total", \\
      "< awk -F, '\$1==\"threads\"' $csv" using (2):(1000*\$6) with points pt 7 ps 1.5 title "1 rank x 2 threads, strong size"
 EOF
