@@ -144,8 +144,8 @@ END {
   weak = st[2] / st[3]; strong = st[4] / st[5]
   others = ""
   for (i = 7; i + 1 <= last; i += 2)
-    others = others sprintf("; at %d particles per rank **%.0f %%**", npr[i], 100 * st[i] / st[i + 1])
-  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.0f %%** at %d particles per rank%s.", 100 * weak, npr[2], others
+    others = others sprintf("; at %d particles per rank **%.1f %%**", npr[i], 100 * st[i] / st[i + 1])
+  printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.1f %%** at %d particles per rank%s.", 100 * weak, npr[2], others
   printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. What the weak case loses is not the exchange: two ranks share the L3 cache and the memory bandwidth that one rank has to itself, and the efficiency at the two sizes shows how much of that is the cache (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
@@ -161,7 +161,7 @@ END {
   comm = 2 * nb * alpha + bytes * beta + reductions * alpha * log(P) / log(2)
   compute = tc * m
   eff = compute / (compute + comm)
-  printf "\n**Model, 64 ranks x 1e6 particles** (inputs measured above except the network): compute %.3f s per step (%.3g s per particle-step, measured with one rank alone on the machine); ghost fraction %.3f (measured %.3f at %d particles per rank, scaled as m^(-1/3)); %.1f MB exchanged per rank per step; with an assumed network of 2 us latency, 10 GB/s per rank, 12 neighbours and 12 reductions of log2(64) stages per step: communication %.2g s, so the exchange costs %.2f %% of a step if it does not overlap the compute. Ranks that share a node also share its memory bandwidth: with the loss measured here (weak efficiency %.0f %%) the expected efficiency is **%.0f %%**, the same as the node'\''s threads would reach.\n", compute, tc, gm, g0, m0, bytes / 1e6, comm, 100 * (1 - eff), 100 * weak, 100 * eff * weak
+  printf "\n**Model, 64 ranks x 1e6 particles** (inputs measured above except the network): compute %.3f s per step (%.3g s per particle-step, measured with one rank alone on the machine); ghost fraction %.3f (measured %.3f at %d particles per rank, scaled as m^(-1/3)); %.1f MB exchanged per rank per step; with an assumed network of 2 us latency, 10 GB/s per rank, 12 neighbours and 12 reductions of log2(64) stages per step: communication %.2g s, so the exchange costs %.2f %% of a step if it does not overlap the compute. Ranks that share a node also share its memory bandwidth: with the loss measured here (weak efficiency %.1f %%) the expected efficiency is **%.1f %%**, the same as the node'\''s threads would reach.\n", compute, tc, gm, g0, m0, bytes / 1e6, comm, 100 * (1 - eff), 100 * weak, 100 * eff * weak
 }' "$csv" >"$md"
 cat "$md"
 

@@ -1,5 +1,6 @@
 // The run loop: bit-for-bit restart from a checkpoint, the diagnosis of a blow-up
-// with the last good frame kept, and the clamping of a too-large user step.
+// with the last good frame kept, the clamping of a too-large user step, and the
+// relaxation's progress line.
 #include "sim_fixtures.hpp"
 #include "vtu_read_back.hpp"
 
@@ -80,14 +81,14 @@ struct RunResult {
 };
 
 RunResult run_file(const fs::path& scene_file, const fs::path& out, std::int64_t max_steps, const fs::path& restart = {},
-        bool allow_unstable_dt = false) {
+        bool allow_unstable_dt = false, bool quiet = true) {
   const scene::Scene scene = scene::load_scene(scene_file.string());
   RunOptions options;
   options.out_dir = out;
   options.restart = restart;
   options.max_steps_override = max_steps;
   options.allow_unstable_dt = allow_unstable_dt;
-  options.quiet = true;
+  options.quiet = quiet;
   std::ostringstream log;
   RunResult r;
   r.code = run_scene(scene, options, log);
@@ -243,6 +244,54 @@ TEST(StepClamping, UserStepAboveTheStableStepIsClampedWithAWarning) {
   const double stable_end = summary_number(dir / "out" / "summary.json", "stable_dt");
   EXPECT_LE(used, 0.5 * stable_end * (1.0 + 1e-12));  // the default dt_safety
   EXPECT_LT(used, 0.1 * requested);
+  fs::remove_all(dir);
+}
+
+// A relaxation keeps going while either criterion fails, and its progress line shows
+// both, so a run whose residual is below its target says that it waits for the kinetic
+// energy. The last line carries the values summary.json reports at the end.
+TEST(RelaxProgress, TheLineShowsBothCriteriaWithTheRunsValues) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("relax_progress");
+  write_text(dir / "sag.toml", R"([scene]
+name = "relax_progress"
+[integrator]
+mode = "relax"
+relax_force_tol = 1e-5
+relax_velocity_tol = 1e-9
+[[body]]
+name = "block"
+density = 1000
+[body.cloud]
+generator = "block"
+size = [1e-5, 1e-5, 4e-6]
+cells = [4, 4, 2]
+[body.material]
+model = "neo_hookean"
+mu = 1e3
+lambda = 4e3
+[[body.boundary]]
+surface = "zmin"
+type = "fixed"
+[[term]]
+type = "body_force"
+body = "block"
+acceleration = [0, 0, -1e4]
+)");
+  const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
+  ASSERT_EQ(r.code, kSuccess) << r.log;
+  std::smatch m;
+  const std::regex line(R"(residual ([0-9.e+-]+) \(target 1e-05\), kinetic ([0-9.e+-]+) \(target 1e-09\))");
+  std::string last;
+  for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), line); it != std::sregex_iterator(); ++it)
+    last = it->str();
+  ASSERT_FALSE(last.empty()) << r.log;
+  ASSERT_TRUE(std::regex_search(last, m, line));
+  const double residual = summary_number(dir / "out" / "summary.json", "residual");
+  const double kinetic = summary_number(dir / "out" / "summary.json", "kinetic_measure");
+  std::printf("last progress line: %s; summary: residual %.3e, kinetic %.3e\n", last.c_str(), residual, kinetic);
+  EXPECT_NEAR(std::stod(m[1].str()), residual, 0.006 * residual);  // printed to 3 digits
+  EXPECT_NEAR(std::stod(m[2].str()), kinetic, 0.06 * kinetic);     // printed to 2 digits
   fs::remove_all(dir);
 }
 
