@@ -12,6 +12,14 @@ FireParameters FireParameters::named(const std::string& method) {
   throw std::invalid_argument("unknown relax_method '" + method + "' (expected \"fire\" or \"fire2\")");
 }
 
+void stop_bodies(World& world) {
+  for (auto& bp : world.bodies) {
+    Body& b = *bp;
+    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
+    b.constraints.impose(b.d, b.v);
+  }
+}
+
 FireStep Fire::update(World& world, double dt, double dt_max) {
   // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body (and rank).
   // Each body's sums start from zero and are added after the loop: an OpenMP reduction
@@ -61,15 +69,10 @@ FireStep Fire::update(World& world, double dt, double dt_max) {
     alpha_ = p_.alpha_start;
     result.dt = std::max(dt * p_.f_dec, p_.dt_min_fraction * dt_max);
   }
-  if (p_.half_step_back) {
+  if (p_.half_step_back)
     result.step_back = true;
-    return result;
-  }
-  for (auto& bp : world.bodies) {
-    Body& b = *bp;
-    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
-    b.constraints.impose(b.d, b.v);
-  }
+  else
+    stop_bodies(world);
   return result;
 }
 

@@ -274,8 +274,11 @@ void Integrator::step_back(StepBook& book) {
     jump_[k] = b.d;  // the coordinates before the jump
 #pragma omp parallel for schedule(static)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * dt_ * b.v[i];
-    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
-    b.constraints.impose(b.d, b.v);
+  }
+  stop_bodies(world_);  // the constrained coordinates follow the free ones
+  // The jump as the velocity, for the loads' power along it.
+  for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
+    Body& b = *world_.bodies[k];
 #pragma omp parallel for schedule(static)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = b.d[i] - jump_[k][i];
   }
@@ -283,11 +286,7 @@ void Integrator::step_back(StepBook& book) {
   for (auto& bp : world_.bodies) update_positions(*bp);
   forces_and_accelerations();
   const double power_after = power_of_terms();
-  for (auto& bp : world_.bodies) {
-    Body& b = *bp;
-    std::fill(b.v.begin(), b.v.end(), Vec3::Zero());
-    b.constraints.impose(b.d, b.v);
-  }
+  stop_bodies(world_);
   const double work = 0.5 * (power_before + power_after);
   ledger_.external += work;
   book.fire_dissipated += work - (stored_energy() - stored_before);

@@ -39,6 +39,9 @@ double dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   return s;
 }
 
+// The constants of the original FIRE (Bitzek et al. 2006), which Fire uses by default.
+const FireParameters kBitzek = FireParameters::bitzek2006();
+
 std::vector<Vec3> random_vectors(std::size_t n, std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Vec3> v(n);
@@ -61,7 +64,7 @@ TEST(Fire, MixingSteersTheVelocityTowardTheForceWithoutLengtheningIt) {
   const FireStep r = fire.update(*world, 1e-3, 1.0);
 
   // v' = (1 - alpha) v + alpha |v| F / |F|, written out here.
-  const double alpha = FireParameters::bitzek2006().alpha_start, vn = norm(v0), fn = norm(b.force);
+  const double alpha = kBitzek.alpha_start, vn = norm(v0), fn = norm(b.force);
   for (std::size_t i = 0; i < 20; ++i) {
     const Vec3 expected = (1.0 - alpha) * v0[i] + alpha * vn * b.force[i] / fn;
     EXPECT_NEAR((b.v[i] - expected).norm(), 0.0, 1e-14 * vn) << i;
@@ -75,7 +78,7 @@ TEST(Fire, MixingSteersTheVelocityTowardTheForceWithoutLengtheningIt) {
   EXPECT_GE(r.dissipated, 0.0);  // equal masses: |v'| <= |v| is kinetic energy removed
   // The first downhill step changes neither the step nor alpha.
   EXPECT_EQ(r.dt, 1e-3);
-  EXPECT_EQ(fire.alpha(), FireParameters::bitzek2006().alpha_start);
+  EXPECT_EQ(fire.alpha(), kBitzek.alpha_start);
   EXPECT_EQ(fire.positive_steps(), 1);
 
   // A velocity parallel to the force keeps its length and direction.
@@ -90,18 +93,18 @@ TEST(Fire, StepGrowsAndAlphaShrinksAfterNMinDownhillStepsUpToDtMax) {
   Body& b = *world->bodies.front();
   Fire fire;
   const double dt_max = 2e-3;
-  double dt = 1e-3, expected_alpha = FireParameters::bitzek2006().alpha_start;
+  double dt = 1e-3, expected_alpha = kBitzek.alpha_start;
   for (int k = 1; k <= 20; ++k) {
     for (std::size_t i = 0; i < 3; ++i) {  // downhill every time
       b.force[i] = Vec3(1.0, 2.0, static_cast<double>(i));
       b.v[i] = 0.5 * b.force[i];
     }
     const double next = fire.update(*world, dt, dt_max).dt;
-    if (k <= FireParameters::bitzek2006().n_delay) {
+    if (k <= kBitzek.n_delay) {
       EXPECT_EQ(next, dt) << "step " << k << ": no growth within the first N_min downhill steps";
     } else {
-      EXPECT_EQ(next, std::min(dt * FireParameters::bitzek2006().f_inc, dt_max)) << "step " << k;
-      expected_alpha *= FireParameters::bitzek2006().f_alpha;
+      EXPECT_EQ(next, std::min(dt * kBitzek.f_inc, dt_max)) << "step " << k;
+      expected_alpha *= kBitzek.f_alpha;
     }
     EXPECT_EQ(fire.alpha(), expected_alpha) << "step " << k;
     EXPECT_EQ(fire.positive_steps(), k);
@@ -109,7 +112,7 @@ TEST(Fire, StepGrowsAndAlphaShrinksAfterNMinDownhillStepsUpToDtMax) {
   }
   std::printf("after 20 downhill steps: dt = %.4g (dt_max %.4g), alpha = %.5f\n", dt, dt_max, fire.alpha());
   EXPECT_EQ(dt, dt_max);  // 1.1^15 > 2: the ceiling is reached and kept
-  EXPECT_LT(fire.alpha(), FireParameters::bitzek2006().alpha_start);
+  EXPECT_LT(fire.alpha(), kBitzek.alpha_start);
 }
 
 TEST(Fire, UphillStepStopsHalvesTheStepAndResetsAlpha) {
@@ -124,21 +127,21 @@ TEST(Fire, UphillStepStopsHalvesTheStepAndResetsAlpha) {
     }
     dt = fire.update(*world, dt, 1.0).dt;
   }
-  ASSERT_LT(fire.alpha(), FireParameters::bitzek2006().alpha_start);
+  ASSERT_LT(fire.alpha(), kBitzek.alpha_start);
   ASSERT_EQ(fire.positive_steps(), 10);
 
   for (std::size_t i = 0; i < 4; ++i) b.v[i] = -0.7 * b.force[i];  // uphill
   const double ke = kinetic_energy(*world);
   const FireStep r = fire.update(*world, dt, 1.0);
   for (const auto& v : b.v) EXPECT_EQ(v, Vec3::Zero());
-  EXPECT_EQ(r.dt, FireParameters::bitzek2006().f_dec * dt);
-  EXPECT_EQ(fire.alpha(), FireParameters::bitzek2006().alpha_start);
+  EXPECT_EQ(r.dt, kBitzek.f_dec * dt);
+  EXPECT_EQ(fire.alpha(), kBitzek.alpha_start);
   EXPECT_EQ(fire.positive_steps(), 0);
   EXPECT_EQ(r.dissipated, ke);  // all of the kinetic energy
 
   // At rest the power is zero: FIRE treats it as uphill (nothing to mix).
   const FireStep rest = fire.update(*world, r.dt, 1.0);
-  EXPECT_EQ(rest.dt, FireParameters::bitzek2006().f_dec * r.dt);
+  EXPECT_EQ(rest.dt, kBitzek.f_dec * r.dt);
   EXPECT_EQ(rest.dissipated, 0.0);
 }
 

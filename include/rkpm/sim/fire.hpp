@@ -49,6 +49,11 @@ struct FireStep {
   bool step_back = false;
 };
 
+// Stops every body: velocities zero, the essential boundary conditions re-imposed (the
+// supports keep their prescribed velocities). FIRE's uphill step, and the end of
+// FIRE 2.0's step back.
+void stop_bodies(World& world);
+
 class Fire {
  public:
   explicit Fire(FireParameters parameters = FireParameters::bitzek2006()) : p_(parameters), alpha_(p_.alpha_start) {}
@@ -62,7 +67,6 @@ class Fire {
   // (FireParameters::initial_delay).
   FireStep update(World& world, double dt, double dt_max);
 
-  const FireParameters& parameters() const { return p_; }
   double alpha() const { return alpha_; }
   std::int64_t positive_steps() const { return positive_steps_; }  // P > 0 steps in a row
 
