@@ -15,7 +15,7 @@ namespace {
 
 using rkpm::Vec3;
 
-std::string shell_scene(const std::string& activity_keys) {
+std::string shell_scene(const std::string& activity_keys, double thickness = 0.5e-6) {
   return fmt::format(R"(
 [scene]
 name = "activity"
@@ -27,7 +27,7 @@ density = 1000.0
 [body.cloud]
 generator = "shell"
 semi_axes = [5e-6, 5e-6, 1.5e-6]
-thickness = 0.5e-6
+thickness = {}
 face_cells = 6
 layers = 3
 [body.material]
@@ -39,7 +39,7 @@ bulk = 1e5
 initial = "surface_normal"
 boundary = "normal"
 )",
-                     activity_keys);
+                     thickness, activity_keys);
 }
 
 // zeta_L of every particle: the reference amplitude times the relative field.
@@ -122,6 +122,83 @@ TEST(ActivityField, RimActivityAloneUsesItAsTheReferenceAmplitude) {
   for (std::size_t i = 0; i < body.size(); ++i) {
     const double c = body.director->h0[i].z();
     EXPECT_NEAR(zeta[i], 2e3 * (1.0 - c * c), 1e-9);
+  }
+}
+
+// zeta_reference_thickness: a wall of 0.3 um with the amplitudes given for 0.5 um keeps
+// the mean of each layer factor over the two halves (the in-plane growth) and scales
+// their difference (the bending) by 0.6.
+TEST(ActivityField, ReferenceThicknessScalesTheBendingPartAndKeepsTheMean) {
+  const std::string keys = "zeta = -8e3\nzeta_profile = \"axial\"\nzeta_power = 2\nzeta_layer = \"inner\"\n"
+                           "zeta_rim = 3e3\nzeta_rim_layer = \"bending\"\nzeta_reference_thickness = 0.5e-6";
+  const auto world = rkpm::sim::build_world(rkpm::scene::parse_scene(shell_scene(keys, 0.3e-6), "activity.toml"));
+  const auto& body = *world->bodies.front();
+  const auto zeta = zeta_field(body);
+  const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
+  const double scale = 0.3 / 0.5;
+  // side = 1 in the inner half, 0 in the outer half, 1/2 on the mid-surface.
+  auto expected = [&](std::size_t i, double side) {
+    const double c = body.director->h0[i].z();
+    return -8e3 * c * c * (0.5 + scale * (side - 0.5)) + 3e3 * (1.0 - c * c) * scale * (2.0 * side - 1.0);
+  };
+  int inner_count = 0, outer_count = 0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    if (body.cloud.surface_mask[i] & inner) {
+      EXPECT_NEAR(zeta[i], expected(i, 1.0), 1e-9);
+      ++inner_count;
+    } else if (body.cloud.surface_mask[i] & outer) {
+      EXPECT_NEAR(zeta[i], expected(i, 0.0), 1e-9);
+      ++outer_count;
+    } else {  // the middle layer: on one side or, where it is equidistant, on the mid-surface
+      double nearest = 1e300;
+      for (double side : {0.0, 0.5, 1.0}) nearest = std::min(nearest, std::abs(zeta[i] - expected(i, side)));
+      EXPECT_LT(nearest, 1e-9);
+    }
+  }
+  EXPECT_GT(inner_count, 50);
+  EXPECT_GT(outer_count, 50);
+}
+
+// At the reference thickness the scaled field is the unscaled one, bit for bit: the
+// example scenes that declare the key keep their results at their own thickness.
+TEST(ActivityField, AtTheReferenceThicknessTheFieldIsUnchanged) {
+  const std::string keys = "zeta = -8e3\nzeta_profile = \"radial\"\nzeta_layer = \"inner\"\n"
+                           "zeta_rim = 3e3\nzeta_rim_layer = \"outer\"";
+  const auto plain = rkpm::sim::build_world(rkpm::scene::parse_scene(shell_scene(keys), "activity.toml"));
+  const auto scaled = rkpm::sim::build_world(
+      rkpm::scene::parse_scene(shell_scene(keys + "\nzeta_reference_thickness = 0.5e-6"), "activity.toml"));
+  EXPECT_EQ(zeta_field(*plain->bodies.front()), zeta_field(*scaled->bodies.front()));
+}
+
+TEST(ActivityField, ReferenceThicknessWithoutAShellIsASetupErrorNamingTheKey) {
+  const std::string text = R"(
+[scene]
+name = "activity"
+[integrator]
+mode = "relax"
+[[body]]
+name = "ball"
+density = 1000.0
+[body.cloud]
+generator = "sphere"
+radius = 1e-6
+cells = 4
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+zeta = -1e3
+zeta_reference_thickness = 0.5e-6
+[body.director]
+initial = "surface_normal"
+boundary = "normal"
+)";
+  try {
+    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
+    FAIL() << "expected a SetupError";
+  } catch (const rkpm::sim::SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("ball.toml:18"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("zeta_reference_thickness"), std::string::npos) << e.what();
   }
 }
 

@@ -31,7 +31,8 @@ void build(const scene::BodySpec& spec, sim::Body& body) {
     dir.frank_flux.assign(n, Mat3::Zero());
     dir.frank_divergence.assign(n, Vec3::Zero());
   }
-  material.activity = activity_field(s, spec.material, body, model.zeta);
+  const double wall_thickness = spec.generator() == "shell" ? spec.cloud.real("thickness") : 0.0;
+  material.activity = activity_field(s, spec.material, body, wall_thickness, model.zeta);
   body.material = std::move(material);
 }
 

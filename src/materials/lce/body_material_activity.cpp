@@ -68,15 +68,22 @@ std::vector<double> relative_axis_distance(const particles::Cloud& cloud, const 
 // all = 1; inner / outer = the half of a shell's wall nearer that surface (that half grows
 // or shrinks in-plane, the other does not: the wall bends like a bimetal strip);
 // bending = +1 in the inner half and -1 in the outer half (a pure bending moment).
-void apply_layer(const particles::Cloud& cloud, const std::string& layer, const scene::ParamSet& m,
-                 const std::string& key, std::vector<double>& profile) {
+// `bending_scale` (T / T_ref, 1 without a reference thickness) scales the part of the
+// factor that differs between the two halves and keeps their mean: inner / outer give
+// 1/2 + scale (side - 1/2), bending scale (2 side - 1). A bimetal wall's curvature is
+// 3 de / (2 T) for a growth difference de between its halves, so this keeps the
+// curvature the activity asks for, and the in-plane growth, at any wall thickness.
+void apply_layer(const particles::Cloud& cloud, const std::string& layer, double bending_scale,
+                 const scene::ParamSet& m, const std::string& key, std::vector<double>& profile) {
   if (layer == "all") return;
   if (cloud.surface_bit("inner") == 0u || cloud.surface_bit("outer") == 0u)
     throw SetupError(fmt::format("{}:{}: [body.material] {} = \"{}\": expected \"all\" for a cloud "
                                  "without inner and outer surfaces (a shell has them)",
                                  m.file(), m.line(key), key, layer));
-  const auto side = wall_side(cloud, layer == "bending" ? "inner" : layer);
-  for (std::size_t i = 0; i < profile.size(); ++i) profile[i] *= layer == "bending" ? 2.0 * side[i] - 1.0 : side[i];
+  const bool bending = layer == "bending";
+  const auto side = wall_side(cloud, bending ? "inner" : layer);
+  for (std::size_t i = 0; i < profile.size(); ++i)
+    profile[i] *= bending ? bending_scale * (2.0 * side[i] - 1.0) : 0.5 + bending_scale * (side[i] - 0.5);
 }
 
 }  // namespace
@@ -85,14 +92,23 @@ void apply_layer(const particles::Cloud& cloud, const std::string& layer, const 
 //   w_face  = 1 (uniform), |c|^p (axial), |s|^p (equatorial) or (1 - rho^2)^p (radial),
 //             c = h0 . a and s = sqrt(1 - c^2) for the reference director h0 and axis a;
 //   w_layer = 1 (all), the inner or outer half of a shell's wall, or +1 / -1 in the
-//             inner / outer half (bending);
+//             inner / outer half (bending); the difference between the halves scaled
+//             by T / T_ref when zeta_reference_thickness = T_ref is given (apply_layer);
 //   w_rim   = |s|^q: where the wall normal is perpendicular to the axis (a cell's rim),
 //             q = zeta_rim_power, times its own through-the-wall factor (zeta_rim_layer).
 std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& m, const sim::Body& body,
-                                   double& reference_zeta) {
+                                   double wall_thickness, double& reference_zeta) {
   const std::string& profile = settings.zeta_profile;
   const double zeta = settings.zeta, zeta_rim = settings.zeta_rim;
   reference_zeta = zeta != 0.0 ? zeta : zeta_rim;
+  double bending_scale = 1.0;
+  if (settings.zeta_reference_thickness > 0.0) {
+    if (!(wall_thickness > 0.0))
+      throw SetupError(fmt::format("{}:{}: [body.material] zeta_reference_thickness = {}: expected a cloud with a "
+                                   "wall thickness (generator = \"shell\" and its thickness)",
+                                   m.file(), m.line("zeta_reference_thickness"), settings.zeta_reference_thickness));
+    bending_scale = wall_thickness / settings.zeta_reference_thickness;
+  }
   if (profile == "uniform" && settings.zeta_layer == "all" && zeta_rim == 0.0) return {};
   if (reference_zeta == 0.0) return {};
 
@@ -120,8 +136,8 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
     const double rim_power = settings.zeta_rim_power;
     for (std::size_t i = 0; i < n; ++i) rim[i] = std::pow(1.0 - cos2(i), 0.5 * rim_power);
   }
-  apply_layer(body.cloud, settings.zeta_layer, m, "zeta_layer", face);
-  apply_layer(body.cloud, settings.zeta_rim_layer, m, "zeta_rim_layer", rim);
+  apply_layer(body.cloud, settings.zeta_layer, bending_scale, m, "zeta_layer", face);
+  apply_layer(body.cloud, settings.zeta_rim_layer, bending_scale, m, "zeta_rim_layer", rim);
 
   std::vector<double> activity(n);
   for (std::size_t i = 0; i < n; ++i) activity[i] = (zeta * face[i] + zeta_rim * rim[i]) / reference_zeta;

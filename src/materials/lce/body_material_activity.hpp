@@ -1,6 +1,7 @@
 // The spatial activity field of an active LCE body (seed Eq. 1: sigma_a = -zeta h x h),
 // from the activity settings of its [body.material] table: zeta, zeta_profile,
-// zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power and zeta_rim_layer.
+// zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power, zeta_rim_layer and
+// zeta_reference_thickness.
 #pragma once
 
 #include "materials/lce/settings.hpp"
@@ -14,9 +15,10 @@ namespace rkpm::materials::lce {
 // Per-particle activity zeta_L relative to `reference_zeta` (set here to zeta, or to
 // zeta_rim when zeta = 0); empty when the activity is uniform. `body` must have its
 // cloud and director field. `table` is the [body.material] table the settings were read
-// from, for the file and line of an error. Throws sim::SetupError naming the key for an
-// inconsistent choice.
+// from, for the file and line of an error. `wall_thickness` is the shell generator's
+// nominal wall thickness T (0 for other clouds), which zeta_reference_thickness scales
+// by. Throws sim::SetupError naming the key for an inconsistent choice.
 std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& table, const sim::Body& body,
-                                   double& reference_zeta);
+                                   double wall_thickness, double& reference_zeta);
 
 }  // namespace rkpm::materials::lce

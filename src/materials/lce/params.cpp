@@ -63,6 +63,14 @@ const scene::SettingsTable<Settings>& settings_table() {
           .bind(&Settings::zeta_rim_layer,
                 ParamSpec::choice("zeta_rim_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
                   .help("Through-the-wall profile of the rim activity, as zeta_layer is for zeta."))
+          .bind(&Settings::zeta_reference_thickness,
+                ParamSpec::real("zeta_reference_thickness", "m").at_least(0).defaults(0.0)
+                  .help("Wall thickness T_ref for which zeta and zeta_rim are given when their layer is inner, outer or "
+                        "bending; 0 = use them as given at any thickness. When > 0, the part of a layer activity that "
+                        "bends the wall (its difference between the two halves) is scaled by T / T_ref, T the shell "
+                        "generator's thickness, and the part that changes the wall's area is kept: a bimetal wall bends "
+                        "to curvature 3 de / (2 T) under a growth difference de between its halves, so the same shape "
+                        "needs de proportional to T, while the in-plane growth does not depend on T."))
           .bind(&Settings::zeta_axis,
                 ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
                   .help("Axis a of the axial activity profile (normalised; must be non-zero)."));

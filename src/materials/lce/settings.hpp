@@ -23,6 +23,7 @@ struct Settings {
   double zeta_rim = 0.0;                 // [Pa]
   double zeta_rim_power = 2.0;           // [-] q
   std::string zeta_rim_layer = "all";    // all, inner, outer or bending
+  double zeta_reference_thickness = 0.0; // [m] T_ref; 0 = layer profiles independent of the wall
   Vec3 zeta_axis = Vec3::UnitZ();        // [-] a (not normalised)
 };
 
