@@ -69,7 +69,8 @@ void carry_state(const World& from, World& to) {
   for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*to.comm, *from.bodies[b], *to.bodies[b]);
 }
 
-std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log) {
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
+                                          const LevelStepCallback& after_step) {
   using Clock = std::chrono::steady_clock;
   const auto& factors = scene.integrator.reals("nested_levels");
   std::vector<LevelRun> runs;
@@ -83,7 +84,11 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
     const std::int64_t max_steps = level_scene.integrator.integer("max_steps");
     try {
       integrator.initialize();
-      while (!(level->step > 0 && integrator.converged()) && level->step < max_steps) integrator.step();
+      while (!(level->step > 0 && integrator.converged()) && level->step < max_steps) {
+        integrator.step();
+        if (after_step) after_step(l, *level, integrator, false);
+      }
+      if (after_step) after_step(l, *level, integrator, true);
     } catch (const BlowUp& e) {
       throw BlowUp(fmt::format("nested level {} (factor {}, {} particles): {}", l + 1, factors[l],
                                level->particle_count(), e.what()));

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <ostream>
 
 namespace rkpm::sim {
@@ -171,7 +172,23 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   std::vector<LevelRun> levels;
   if (options.restart.empty()) {
     try {
-      levels = relax_coarse_levels(scene, *world, log);
+      // Each level gets its own progress line, labelled with the level, so that a long
+      // coarse relaxation shows its residual and kinetic criterion like the fine run.
+      std::unique_ptr<io::Progress> level_progress;
+      const std::size_t level_count = scene.integrator.reals("nested_levels").size();
+      LevelStepCallback show;
+      if (!options.quiet)
+        show = [&](std::size_t l, const World& level, const Integrator& level_integrator, bool done) {
+          if (!level_progress) level_progress = std::make_unique<io::Progress>(log, io::stderr_is_terminal());
+          level_progress->update(level.step, level.time, 0.0, level_integrator.dt(), elapsed(),
+                                 fmt::format("level {}/{}: {}", l + 1, level_count,
+                                             relax_progress(level_integrator, settings)));
+          if (done) {
+            level_progress->finish();
+            level_progress.reset();
+          }
+        };
+      levels = relax_coarse_levels(scene, *world, log, show);
     } catch (const SetupError& e) {
       log << "error: " << e.what() << "\n";
       return kBadInput;

@@ -295,5 +295,56 @@ acceleration = [0, 0, -1e4]
   fs::remove_all(dir);
 }
 
+// A nested level shows the same progress line, labelled with the level, and ends it
+// before the level's own line: a long coarse relaxation is not silent.
+TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("relax_progress_levels");
+  write_text(dir / "sag.toml", R"([scene]
+name = "relax_progress_levels"
+[integrator]
+mode = "relax"
+relax_force_tol = 1e-5
+relax_velocity_tol = 1e-9
+nested_levels = [0.5]
+[[body]]
+name = "block"
+density = 1000
+[body.cloud]
+generator = "block"
+size = [1e-5, 1e-5, 4e-6]
+cells = [8, 8, 4]
+[body.material]
+model = "neo_hookean"
+mu = 1e3
+lambda = 4e3
+[[body.boundary]]
+surface = "zmin"
+type = "fixed"
+[[term]]
+type = "body_force"
+body = "block"
+acceleration = [0, 0, -1e4]
+)");
+  const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
+  ASSERT_EQ(r.code, kSuccess) << r.log;
+  const std::regex progress(R"(level 1/1: residual ([0-9.e+-]+) \(target 1e-05\), kinetic ([0-9.e+-]+))");
+  std::smatch last;
+  std::size_t last_at = 0;
+  for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), progress); it != std::sregex_iterator(); ++it) {
+    last = *it;
+    last_at = static_cast<std::size_t>(it->position());
+  }
+  ASSERT_FALSE(last.empty()) << r.log;
+  std::smatch result;
+  const std::regex level_line(R"(nested level 1/1: factor 0.5, [0-9]+ particles, converged after [0-9]+ steps \(residual ([0-9.e+-]+)\))");
+  ASSERT_TRUE(std::regex_search(r.log, result, level_line)) << r.log;
+  EXPECT_LT(last_at, static_cast<std::size_t>(result.position())) << r.log;
+  // The level's last progress line shows the residual it converged with.
+  const double shown = std::stod(last[1].str()), reported = std::stod(result[1].str());
+  EXPECT_NEAR(shown, reported, 0.006 * reported) << r.log;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rkpm::sim

@@ -8,6 +8,7 @@
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <vector>
 
@@ -38,6 +39,12 @@ void carry_state(const World& from, World& to);
 // one record per level; writes one line per level to `log`. A level that does not
 // converge within max_steps still hands on its state (the fine run decides
 // convergence); a level that blows up throws BlowUp, its message naming the level.
-std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log);
+// `after_step`, when given, is called after every step of a level with the level's
+// index (0 = coarsest), its world and its integrator, and once more with `done` set
+// when the level ends, before its line is logged: the program's progress line.
+class Integrator;
+using LevelStepCallback = std::function<void(std::size_t level, const World&, const Integrator&, bool done)>;
+std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
+                                          const LevelStepCallback& after_step = {});
 
 }  // namespace rkpm::sim
