@@ -42,6 +42,32 @@ boundary = "normal"
                      thickness, activity_keys);
 }
 
+// An LCE ball (no inner or outer surface, no wall thickness) with `material_keys`.
+std::string ball_scene(const std::string& material_keys) {
+  return fmt::format(R"(
+[scene]
+name = "activity"
+[integrator]
+mode = "relax"
+[[body]]
+name = "ball"
+density = 1000.0
+[body.cloud]
+generator = "sphere"
+radius = 1e-6
+cells = 4
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+{}
+[body.director]
+initial = "surface_normal"
+boundary = "normal"
+)",
+                     material_keys);
+}
+
 // zeta_L of every particle: the reference amplitude times the relative field.
 std::vector<double> zeta_field(const rkpm::sim::Body& body) {
   const auto& lce = std::get<rkpm::materials::lce::BodyMaterial>(body.material);
@@ -171,28 +197,7 @@ TEST(ActivityField, AtTheReferenceThicknessTheFieldIsUnchanged) {
 }
 
 TEST(ActivityField, ReferenceThicknessWithoutAShellIsASetupErrorNamingTheKey) {
-  const std::string text = R"(
-[scene]
-name = "activity"
-[integrator]
-mode = "relax"
-[[body]]
-name = "ball"
-density = 1000.0
-[body.cloud]
-generator = "sphere"
-radius = 1e-6
-cells = 4
-[body.material]
-model = "lce"
-mu = 1e4
-bulk = 1e5
-zeta = -1e3
-zeta_reference_thickness = 0.5e-6
-[body.director]
-initial = "surface_normal"
-boundary = "normal"
-)";
+  const std::string text = ball_scene("zeta = -1e3\nzeta_reference_thickness = 0.5e-6");
   try {
     rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
     FAIL() << "expected a SetupError";
@@ -203,28 +208,7 @@ boundary = "normal"
 }
 
 TEST(ActivityField, LayerOnASolidBodyIsASetupErrorNamingTheKey) {
-  const std::string text = R"(
-[scene]
-name = "activity"
-[integrator]
-mode = "relax"
-[[body]]
-name = "ball"
-density = 1000.0
-[body.cloud]
-generator = "sphere"
-radius = 1e-6
-cells = 4
-[body.material]
-model = "lce"
-mu = 1e4
-bulk = 1e5
-zeta = -1e3
-zeta_layer = "inner"
-[body.director]
-initial = "surface_normal"
-boundary = "normal"
-)";
+  const std::string text = ball_scene("zeta = -1e3\nzeta_layer = \"inner\"");
   try {
     rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
     FAIL() << "expected a SetupError";

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <regex>
@@ -250,22 +252,23 @@ TEST(StepClamping, UserStepAboveTheStableStepIsClampedWithAWarning) {
 // A relaxation keeps going while either criterion fails, and its progress line shows
 // both, so a run whose residual is below its target says that it waits for the kinetic
 // energy. The last line carries the values summary.json reports at the end.
-TEST(RelaxProgress, TheLineShowsBothCriteriaWithTheRunsValues) {
-  testing::ScopedThreads one(1);
-  const fs::path dir = testing::fresh_dir("relax_progress");
-  write_text(dir / "sag.toml", R"([scene]
-name = "relax_progress"
+// A block sagging under its own weight, relaxed to tight criteria; `extra` goes into
+// [integrator], `cells` is the block's cell count per direction.
+std::string relaxing_block_scene(const std::string& name, const std::string& extra, const std::string& cells) {
+  return fmt::format(R"([scene]
+name = "{}"
 [integrator]
 mode = "relax"
 relax_force_tol = 1e-5
 relax_velocity_tol = 1e-9
+{}
 [[body]]
 name = "block"
 density = 1000
 [body.cloud]
 generator = "block"
 size = [1e-5, 1e-5, 4e-6]
-cells = [4, 4, 2]
+cells = {}
 [body.material]
 model = "neo_hookean"
 mu = 1e3
@@ -277,7 +280,14 @@ type = "fixed"
 type = "body_force"
 body = "block"
 acceleration = [0, 0, -1e4]
-)");
+)",
+                     name, extra, cells);
+}
+
+TEST(RelaxProgress, TheLineShowsBothCriteriaWithTheRunsValues) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("relax_progress");
+  write_text(dir / "sag.toml", relaxing_block_scene("relax_progress", "", "[4, 4, 2]"));
   const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
   ASSERT_EQ(r.code, kSuccess) << r.log;
   std::smatch m;
@@ -300,32 +310,7 @@ acceleration = [0, 0, -1e4]
 TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
   testing::ScopedThreads one(1);
   const fs::path dir = testing::fresh_dir("relax_progress_levels");
-  write_text(dir / "sag.toml", R"([scene]
-name = "relax_progress_levels"
-[integrator]
-mode = "relax"
-relax_force_tol = 1e-5
-relax_velocity_tol = 1e-9
-nested_levels = [0.5]
-[[body]]
-name = "block"
-density = 1000
-[body.cloud]
-generator = "block"
-size = [1e-5, 1e-5, 4e-6]
-cells = [8, 8, 4]
-[body.material]
-model = "neo_hookean"
-mu = 1e3
-lambda = 4e3
-[[body.boundary]]
-surface = "zmin"
-type = "fixed"
-[[term]]
-type = "body_force"
-body = "block"
-acceleration = [0, 0, -1e4]
-)");
+  write_text(dir / "sag.toml", relaxing_block_scene("relax_progress_levels", "nested_levels = [0.5]", "[8, 8, 4]"));
   const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
   ASSERT_EQ(r.code, kSuccess) << r.log;
   const std::regex progress(R"(level 1/1: residual ([0-9.e+-]+) \(target 1e-05\), kinetic ([0-9.e+-]+))");
