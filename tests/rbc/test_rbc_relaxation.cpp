@@ -138,6 +138,8 @@ TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
   const Relaxed r = relax(coarse_scene(kDriver, 0.9, 0.3e-6));
   expect_evans_fung_disc(r);
+  // A length, not a time: the wall on the axis [m] ends thinner than the 0.3 um it
+  // started with (the contractile inner half squeezes it).
   EXPECT_LT(r.final.wall_thickness_centre, 0.3e-6);
 }
 

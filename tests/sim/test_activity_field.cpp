@@ -15,21 +15,18 @@ namespace {
 
 using rkpm::Vec3;
 
-std::string shell_scene(const std::string& activity_keys, double thickness = 0.5e-6) {
+// One LCE body named `body` on the cloud `cloud_keys` with the activity `material_keys`.
+std::string lce_scene(const std::string& body, const std::string& cloud_keys, const std::string& material_keys) {
   return fmt::format(R"(
 [scene]
 name = "activity"
 [integrator]
 mode = "relax"
 [[body]]
-name = "cell"
+name = "{}"
 density = 1000.0
 [body.cloud]
-generator = "shell"
-semi_axes = [5e-6, 5e-6, 1.5e-6]
-thickness = {}
-face_cells = 6
-layers = 3
+{}
 [body.material]
 model = "lce"
 mu = 1e4
@@ -39,33 +36,21 @@ bulk = 1e5
 initial = "surface_normal"
 boundary = "normal"
 )",
-                     thickness, activity_keys);
+                     body, cloud_keys, material_keys);
 }
 
-// An LCE ball (no inner or outer surface, no wall thickness) with `material_keys`.
+std::string shell_scene(const std::string& activity_keys, double thickness = 0.5e-6) {
+  return lce_scene("cell",
+                   fmt::format("generator = \"shell\"\nsemi_axes = [5e-6, 5e-6, 1.5e-6]\nthickness = {}\n"
+                               "face_cells = 6\nlayers = 3",
+                               thickness),
+                   activity_keys);
+}
+
+// An LCE ball (no inner or outer surface, no wall thickness) with `material_keys`; its
+// material keys start on line 17 of the text.
 std::string ball_scene(const std::string& material_keys) {
-  return fmt::format(R"(
-[scene]
-name = "activity"
-[integrator]
-mode = "relax"
-[[body]]
-name = "ball"
-density = 1000.0
-[body.cloud]
-generator = "sphere"
-radius = 1e-6
-cells = 4
-[body.material]
-model = "lce"
-mu = 1e4
-bulk = 1e5
-{}
-[body.director]
-initial = "surface_normal"
-boundary = "normal"
-)",
-                     material_keys);
+  return lce_scene("ball", "generator = \"sphere\"\nradius = 1e-6\ncells = 4", material_keys);
 }
 
 // zeta_L of every particle: the reference amplitude times the relative field.

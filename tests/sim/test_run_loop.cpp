@@ -284,19 +284,30 @@ acceleration = [0, 0, -1e4]
                      name, extra, cells);
 }
 
+// The last match of `pattern` in `log` (empty when there is none) and where it starts.
+struct LastMatch {
+  std::smatch match;
+  std::size_t position = 0;
+};
+LastMatch last_match(const std::string& log, const std::regex& pattern) {
+  LastMatch last;
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), pattern); it != std::sregex_iterator(); ++it) {
+    last.match = *it;
+    last.position = static_cast<std::size_t>(it->position());
+  }
+  return last;
+}
+
 TEST(RelaxProgress, TheLineShowsBothCriteriaWithTheRunsValues) {
   testing::ScopedThreads one(1);
   const fs::path dir = testing::fresh_dir("relax_progress");
   write_text(dir / "sag.toml", relaxing_block_scene("relax_progress", "", "[4, 4, 2]"));
   const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
   ASSERT_EQ(r.code, kSuccess) << r.log;
-  std::smatch m;
   const std::regex line(R"(residual ([0-9.e+-]+) \(target 1e-05\), kinetic ([0-9.e+-]+) \(target 1e-09\))");
-  std::string last;
-  for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), line); it != std::sregex_iterator(); ++it)
-    last = it->str();
+  const std::smatch m = last_match(r.log, line).match;
+  const std::string last = m.str();
   ASSERT_FALSE(last.empty()) << r.log;
-  ASSERT_TRUE(std::regex_search(last, m, line));
   const double residual = summary_number(dir / "out" / "summary.json", "residual");
   const double kinetic = summary_number(dir / "out" / "summary.json", "kinetic_measure");
   std::printf("last progress line: %s; summary: residual %.3e, kinetic %.3e\n", last.c_str(), residual, kinetic);
@@ -314,12 +325,9 @@ TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
   const RunResult r = run_file(dir / "sag.toml", dir / "out", 40, {}, false, false);
   ASSERT_EQ(r.code, kSuccess) << r.log;
   const std::regex progress(R"(level 1/1: residual ([0-9.e+-]+) \(target 1e-05\), kinetic ([0-9.e+-]+))");
-  std::smatch last;
-  std::size_t last_at = 0;
-  for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), progress); it != std::sregex_iterator(); ++it) {
-    last = *it;
-    last_at = static_cast<std::size_t>(it->position());
-  }
+  const LastMatch found = last_match(r.log, progress);
+  const std::smatch& last = found.match;
+  const std::size_t last_at = found.position;
   ASSERT_FALSE(last.empty()) << r.log;
   std::smatch result;
   const std::regex level_line(R"(nested level 1/1: factor 0.5, [0-9]+ particles, converged after [0-9]+ steps \(residual ([0-9.e+-]+)\))");
