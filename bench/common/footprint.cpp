@@ -38,7 +38,7 @@ Footprint footprint(const sim::Body& b) {
   Footprint f;
   f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation) +
                 (b.rk ? bytes(b.rk->support_radius()) : 0);
-  f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) + bytes(b.P) +
+  f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) +
             bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
             material_bytes(b.material) + b.force_scatter.bytes() + b.point_force_scatter.bytes();
   if (b.director) {
@@ -63,7 +63,7 @@ Traffic internal_force_traffic(const sim::Body& b) {
   // each array once. Scatter buffers are the kernel's own scratch, not compulsory traffic.
   t.operators = gradient_bytes(b.gradient);
   t.state_read = bytes(b.x);
-  t.state_written = bytes(b.F) + bytes(b.P) + bytes(b.force);
+  t.state_written = bytes(b.F) + bytes(b.force);
   t.state_read += material_bytes(b.material);
   if (b.director) {
     const auto& d = *b.director;

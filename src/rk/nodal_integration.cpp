@@ -6,6 +6,10 @@
 
 #include <fmt/format.h>
 
+#if defined(__GLIBC__)
+#include <malloc.h>  // malloc_trim
+#endif
+
 #include <functional>
 #include <omp.h>
 
@@ -133,11 +137,23 @@ struct CsrPiece {
   std::vector<Value> value;
 };
 
-// Joins the pieces in block order into one CSR matrix, freeing each as it goes, so a
-// build's peak is the matrix plus one piece rather than two copies of it.
+// Returns the pages of freed blocks to the operating system. glibc keeps a freed
+// block that is not at the top of its heap resident, so without this the pieces joined
+// so far would stay in the process's memory beside the matrix they were copied into.
+void release_freed_pages() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
+// Joins the pieces in block order into one CSR matrix, freeing each as it goes and
+// returning the freed pages every few pieces, so a build's peak is about one copy of
+// the matrix (the pieces, then the matrix as it fills) rather than two (at 1e6
+// particles of a block, 2.9 KB per particle before, docs/performance.md).
 template <class Value>
 void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, std::vector<Index>& col,
           std::vector<Value>& value) {
+  constexpr std::size_t kPiecesPerRelease = 64;
   std::size_t rows = 0, entries = 0;
   for (const auto& piece : pieces) {
     rows += piece.length.size();
@@ -146,7 +162,7 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
   row_offset.assign(rows + 1, 0);
   col.reserve(entries);
   value.reserve(entries);
-  std::size_t r = 0;
+  std::size_t r = 0, joined = 0;
   for (auto& piece : pieces) {
     for (const Index len : piece.length) {
       row_offset[r + 1] = row_offset[r] + len;
@@ -155,7 +171,9 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
     col.insert(col.end(), piece.col.begin(), piece.col.end());
     value.insert(value.end(), piece.value.begin(), piece.value.end());
     piece = CsrPiece<Value>{};
+    if (++joined % kPiecesPerRelease == 0) release_freed_pages();
   }
+  release_freed_pages();
 }
 
 // Psi_I at each of `points` (in parallel), stored row by row in CSR form: the shape of
@@ -332,10 +350,17 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
 
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
                                              std::uint32_t surface_bits) {
+  return build_boundary_quadrature(cloud, rk, surface_bits, 0, cloud.boundary_particles.size());
+}
+
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
+                                             std::uint32_t surface_bits, std::size_t first, std::size_t last) {
   BoundaryQuadrature q;
   const particles::DualCells cells(cloud);
   std::vector<particles::DualFacet> facets;
-  for (Index L : cloud.boundary_particles) {
+  last = std::min(last, cloud.boundary_particles.size());
+  for (std::size_t b = first; b < last; ++b) {
+    const Index L = cloud.boundary_particles[b];
     cells.facets(L, facets);
     for (const auto& f : facets)
       if (f.on_boundary && (surface_bits == 0u || (face_surfaces(cloud, f.face) & surface_bits))) {

@@ -72,7 +72,6 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
-      body.P[L] = P;
       const double w = op.weight[L];
       rk::scatter_row(op, grad, L, w, P, f);
       if (frank) {
@@ -127,6 +126,13 @@ void compute_internal_forces(Body& body) {
           force_pass(body, body.gradient.grad, dir, stress);
       },
       body.material);
+}
+
+Mat3 first_piola_at(const Body& body, Index L) {
+  const DirectorField* dir = director_of(body);
+  const Mat3 grad_h = dir != nullptr && dir->frank ? dir->grad_h[L] : Mat3::Zero();
+  return std::visit([&](const auto& material) { return material.first_piola(L, body.F[L], grad_h, nullptr, dir); },
+                    body.material);
 }
 
 double strain_energy(const Body& body) {

@@ -236,7 +236,6 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->x.resize(n);
   body->force.assign(n, Vec3::Zero());
   body->F.assign(n, Mat3::Identity());
-  body->P.assign(n, Mat3::Zero());
   update_positions(*body);
 
   // The director field first: a model that carries one (the LCE) builds on it.

@@ -16,7 +16,7 @@ constexpr int kFieldComponents[] = {3, 3, 1, 1, 1, 1, 9, 1, 3};  // the fields a
 // Cauchy stress sigma = P F^T / J at one point, and its von Mises equivalent.
 void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) {
   const Mat3& F = b.F[L];
-  const Mat3 sigma = b.P[L] * F.transpose() / F.determinant();
+  const Mat3 sigma = first_piola_at(b, static_cast<Index>(L)) * F.transpose() / F.determinant();
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) sigma9[3 * r + c] = sigma(r, c);
   const Mat3 sym = 0.5 * (sigma + sigma.transpose());

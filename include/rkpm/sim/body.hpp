@@ -74,7 +74,8 @@ struct Body {
   std::vector<Vec3> d, v, a;                // generalized displacement, velocity, acceleration
   std::vector<Vec3> x;                      // X + d
   std::vector<Vec3> force;                  // total force of this step [N]
-  std::vector<Mat3> F, P;                   // per integration point
+  std::vector<Mat3> F;                      // per integration point; the stress is not kept
+                                            // (first_piola_at recomputes it for output)
   rk::RowScatter force_scatter;             // scratch of the force pass (per-thread buffers)
   rk::RowScatter point_force_scatter;       // scratch of add_point_forces (planned on first use)
 
@@ -110,11 +111,17 @@ void update_positions(Body& body);
 std::vector<Index> one_rank_order(const Body& body);
 
 // F at every integration point, the director gradient where the Frank term needs it,
-// the first Piola-Kirchhoff stress, and body.force = -f_int (the internal force).
+// and body.force = -f_int (the internal force) from the first Piola-Kirchhoff stress,
+// which is used and dropped row by row (72 bytes per point not stored).
 // Distributed: at the points this rank owns, after pulling the ghosts' displacements
 // (and directors) and before returning the ghosts' force contributions to their owners;
 // body.force is then complete at the owned particles.
 void compute_internal_forces(Body& body);
+
+// The first Piola-Kirchhoff stress at point L from the stored F (and Grad_X h) and the
+// current director: what output reports. After a step it is the stress of the state the
+// frame shows (the director has moved since the force pass, at fixed positions).
+Mat3 first_piola_at(const Body& body, Index L);
 
 // Stored (passive) energy sum_L V_L W(F_L) [J]; active stress is not stored energy.
 // Distributed: this rank's share (its owned points); the caller sums over the ranks.

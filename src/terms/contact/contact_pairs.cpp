@@ -11,7 +11,8 @@
 
 namespace rkpm::sim {
 
-ContactPairs::ContactPairs(double cutoff, double skin) : cutoff_(cutoff), skin_(skin) {
+ContactPairs::ContactPairs(double cutoff, double skin, Keep keep, bool transpose)
+    : cutoff_(cutoff), skin_(skin), keep_(std::move(keep)), transpose_(transpose) {
   if (!(cutoff > 0.0) || !(skin >= 0.0))
     throw std::invalid_argument("contact pair list: expected cutoff > 0 and skin >= 0, got cutoff = " +
                                 std::to_string(cutoff) + ", skin = " + std::to_string(skin));
@@ -68,8 +69,10 @@ void ContactPairs::rebuild(const std::vector<Vec3>& xa, Index row_begin, Index r
       for (Index i = row_begin; i < row_end; ++i) {
         search.query(xa[i], radius, found);  // sorted by position in `listed`
         auto& row = rows[static_cast<std::size_t>(i)];
-        row.reserve(found.size());
-        for (const auto& f : found) row.push_back(columns[static_cast<std::size_t>(f.first)]);
+        for (const auto& f : found) {
+          const Index j = columns[static_cast<std::size_t>(f.first)];
+          if (!keep_ || keep_(i, j)) row.push_back(j);
+        }
       }
     }
   }
@@ -77,11 +80,14 @@ void ContactPairs::rebuild(const std::vector<Vec3>& xa, Index row_begin, Index r
   for (Index i = 0; i < na; ++i)
     row_offset_[i + 1] = row_offset_[i] + static_cast<Index>(rows[static_cast<std::size_t>(i)].size());
   partner_.resize(static_cast<std::size_t>(row_offset_.back()));
-  entry_row_.resize(partner_.size());
   for (Index i = 0; i < na; ++i) {
     std::copy(rows[i].begin(), rows[i].end(), partner_.begin() + row_offset_[i]);
-    std::fill(entry_row_.begin() + row_offset_[i], entry_row_.begin() + row_offset_[i + 1], i);
+    std::vector<Index>().swap(rows[i]);  // freed as copied: the rows are not held twice
   }
+  if (!transpose_) return;
+  entry_row_.resize(partner_.size());
+  for (Index i = 0; i < na; ++i)
+    std::fill(entry_row_.begin() + row_offset_[i], entry_row_.begin() + row_offset_[i + 1], i);
 
   // Transpose by counting sort: entries of each column stay in increasing row order.
   column_offset_.assign(static_cast<std::size_t>(nb) + 1, 0);

@@ -16,13 +16,19 @@
 #include "rkpm/common/types.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace rkpm::sim {
 
 class ContactPairs {
  public:
-  ContactPairs(double cutoff, double skin);
+  // Which pairs a term can ever use, decided from what does not move (its reference
+  // configuration): a pair it rejects is never stored. Empty: every pair is kept.
+  using Keep = std::function<bool(Index i, Index j)>;
+  // `transpose`: also build the column view (column_offset, column_entry, entry_row),
+  // for a term that sums over partners of B; a term that reads the rows only saves it.
+  ContactPairs(double cutoff, double skin, Keep keep = {}, bool transpose = true);
 
   // Rebuilds the list if it was never built, if a body's size changed, or if some
   // particle of A or B moved more than skin/2 since the last build. Returns true
@@ -49,7 +55,8 @@ class ContactPairs {
   // Pairs of row I (particle I of A): entries row_offset[I] .. row_offset[I+1]-1.
   const std::vector<Index>& row_offset() const { return row_offset_; }
   const std::vector<Index>& partner() const { return partner_; }  // J in B of each entry
-  // For particle J of B: entries column_entry[column_offset[J] .. column_offset[J+1]-1].
+  // For particle J of B: entries column_entry[column_offset[J] .. column_offset[J+1]-1]
+  // (these three are empty for a list built without its transpose).
   const std::vector<Index>& column_offset() const { return column_offset_; }
   const std::vector<Index>& column_entry() const { return column_entry_; }
   const std::vector<Index>& entry_row() const { return entry_row_; }  // I of each entry
@@ -58,6 +65,8 @@ class ContactPairs {
   static double largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build, Index begin, Index end);
 
   double cutoff_, skin_;
+  Keep keep_;
+  bool transpose_;
   std::size_t builds_ = 0;
   std::vector<Vec3> xa_built_, xb_built_;  // positions at the last build
   std::vector<Index> row_offset_, partner_, entry_row_;

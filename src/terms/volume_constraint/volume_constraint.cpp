@@ -32,39 +32,16 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   // Group the chosen facets by the cell that owns them (the boundary quadrature lists a
   // cell's facets together) and fold each cell's facets into one row:
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
-  // The surface's quadrature is needed only here: folded, it is freed.
-  const rk::BoundaryQuadrature q = rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit);
-  std::vector<Vec3> value(body.size(), Vec3::Zero());
-  std::vector<char> used(body.size(), 0);
-  std::vector<Index> touched;
+  // The surface's quadrature is needed only here. It is built and folded in batches of
+  // boundary particles, so that its shape functions (several times the folded rows) are
+  // never held for the whole surface: at 1e6 particles of the RBC shell they were the
+  // peak of the set-up's memory (docs/performance.md).
+  constexpr std::size_t batch = 4096;
+  Fold fold{std::vector<Vec3>(body.size(), Vec3::Zero()), std::vector<char>(body.size(), 0), {}};
   row_offset_.push_back(0);
-  for (std::size_t f = 0; f < q.point.size();) {
-    const Index owner = q.owner[f];
-    Mat3 C = Mat3::Zero();
-    for (; f < q.point.size() && q.owner[f] == owner; ++f) {
-      C.noalias() += q.point[f] * q.area[f].transpose();
-      for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) {
-        const Index I = q.col[k];
-        if (!used[I]) {
-          used[I] = 1;
-          touched.push_back(I);
-        }
-        value[I] += q.psi[k] * q.area[f];
-      }
-    }
-    if (touched.empty()) continue;
-    std::sort(touched.begin(), touched.end());
-    for (Index I : touched) {
-      col_.push_back(I);
-      B_.push_back(value[I]);
-      value[I].setZero();
-      used[I] = 0;
-    }
-    touched.clear();
-    owner_.push_back(owner);
-    C_.push_back(C);
-    row_offset_.push_back(static_cast<Index>(col_.size()));
-  }
+  const std::size_t boundary = body.cloud.boundary_particles.size();
+  for (std::size_t first = 0; first < boundary; first += batch)
+    fold_facets(rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit, first, first + batch), fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
@@ -72,6 +49,36 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   const double v = measure_signed_volume();
   sign_ = v < 0.0 ? -1.0 : 1.0;
   initial_ = volume_ = std::abs(v);
+}
+
+void VolumeConstraint::fold_facets(const rk::BoundaryQuadrature& q, Fold& fold) {
+  for (std::size_t f = 0; f < q.point.size();) {
+    const Index owner = q.owner[f];
+    Mat3 C = Mat3::Zero();
+    for (; f < q.point.size() && q.owner[f] == owner; ++f) {
+      C.noalias() += q.point[f] * q.area[f].transpose();
+      for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) {
+        const Index I = q.col[k];
+        if (!fold.used[I]) {
+          fold.used[I] = 1;
+          fold.touched.push_back(I);
+        }
+        fold.value[I] += q.psi[k] * q.area[f];
+      }
+    }
+    if (fold.touched.empty()) continue;
+    std::sort(fold.touched.begin(), fold.touched.end());
+    for (Index I : fold.touched) {
+      col_.push_back(I);
+      B_.push_back(fold.value[I]);
+      fold.value[I].setZero();
+      fold.used[I] = 0;
+    }
+    fold.touched.clear();
+    owner_.push_back(owner);
+    C_.push_back(C);
+    row_offset_.push_back(static_cast<Index>(col_.size()));
+  }
 }
 
 // The rows a rank measures read d at their columns: each must be the rank's own particle

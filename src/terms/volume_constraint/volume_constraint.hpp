@@ -53,6 +53,14 @@ class VolumeConstraint final : public Term {
   double measure_signed_volume();
   bool owns_row(std::size_t r) const;  // the row's cell is this rank's
   void check_ghosts() const;
+  // Scratch of the fold: the running B_LI of one cell, by particle.
+  struct Fold {
+    std::vector<Vec3> value;
+    std::vector<char> used;
+    std::vector<Index> touched;
+  };
+  // Appends one row per cell of q's facets (a cell's facets are listed together).
+  void fold_facets(const rk::BoundaryQuadrature& q, Fold& fold);
 
   Body& body_;
   const par::Comm& comm_;

@@ -72,6 +72,36 @@ TEST(ContactPairs, BuildFindsExactlyTheBruteForcePairsAndTheTransposeMatches) {
   EXPECT_EQ(seen, pairs.size());
 }
 
+// A term's static filter (the wall contact's exclusion of reference neighbours): the
+// list holds exactly the brute-force pairs the filter keeps, in the same sorted rows,
+// and a list built without its transpose holds no column view.
+TEST(ContactPairs, AFilteredListHoldsExactlyTheKeptPairsAndNoTransposeWhenNotAsked) {
+  testing::Random rng{11};
+  const auto a = random_points(rng, 400, Vec3(0, 0, 0), 1.0);
+  const auto keep = [](Index i, Index j) { return (i + j) % 3 != 0; };
+  ContactPairs all(0.3, 0.1), filtered(0.3, 0.1, keep, false);
+  all.rebuild(a, a);
+  filtered.rebuild(a, a);
+  PairSet expected;
+  for (const auto& [i, j] : brute_force(a, a, 0.4))
+    if (keep(i, j)) expected.insert({i, j});
+  PairSet listed;
+  for (Index i = 0; i < 400; ++i)
+    for (Index k = filtered.row_offset()[i]; k < filtered.row_offset()[i + 1]; ++k) {
+      listed.emplace(i, filtered.partner()[k]);
+      if (k > filtered.row_offset()[i]) {
+        EXPECT_LT(filtered.partner()[k - 1], filtered.partner()[k]);
+      }
+    }
+  ASSERT_GT(expected.size(), 1000u);
+  EXPECT_EQ(listed, expected);
+  EXPECT_LT(filtered.size(), all.size() * 3 / 4);  // about a third of the pairs dropped
+  EXPECT_TRUE(filtered.column_offset().empty());
+  EXPECT_TRUE(filtered.column_entry().empty());
+  EXPECT_TRUE(filtered.entry_row().empty());
+  EXPECT_EQ(all.entry_row().size(), all.size());
+}
+
 TEST(ContactPairs, SkippedRebuildsNeverMissAPairInsideTheCutoff) {
   testing::Random rng{11};
   auto a = random_points(rng, 300, Vec3(0, 0, 0), 1.0);

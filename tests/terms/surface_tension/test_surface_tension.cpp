@@ -121,7 +121,7 @@ TEST(SurfaceTension, RelaxedSphereCarriesTheYoungLaplacePressure) {
   double interior = 0.0, interior_volume = 0.0, all = 0.0, all_volume = 0.0;
   for (std::size_t L = 0; L < ball.size(); ++L) {
     const double J = ball.F[L].determinant();
-    const Mat3 sigma = ball.P[L] * ball.F[L].transpose() / J;
+    const Mat3 sigma = first_piola_at(ball, static_cast<Index>(L)) * ball.F[L].transpose() / J;
     const double v = J * ball.cloud.volume[L], pressure = -sigma.trace() / 3.0;
     all += v * pressure;
     all_volume += v;
