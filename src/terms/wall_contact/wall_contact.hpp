@@ -33,6 +33,9 @@ namespace rkpm::sim {
 class WallContact final : public Term {
  public:
   WallContact(Body& body, const WallContactSettings& settings);
+  // The pair list's filter refers to this object: it is never copied or moved.
+  WallContact(const WallContact&) = delete;
+  WallContact& operator=(const WallContact&) = delete;
   std::string name() const override { return "wall_contact"; }
   void add_forces(World& world) override;
   double stored_energy(const World&) const override { return energy_; }
