@@ -350,13 +350,14 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
 
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
                                              std::uint32_t surface_bits) {
-  return build_boundary_quadrature(cloud, rk, surface_bits, 0, cloud.boundary_particles.size());
+  const particles::DualCells cells(cloud);
+  return build_boundary_quadrature(cloud, cells, rk, surface_bits, 0, cloud.boundary_particles.size());
 }
 
-BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
-                                             std::uint32_t surface_bits, std::size_t first, std::size_t last) {
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const particles::DualCells& cells,
+                                             const RKApproximation& rk, std::uint32_t surface_bits,
+                                             std::size_t first, std::size_t last) {
   BoundaryQuadrature q;
-  const particles::DualCells cells(cloud);
   std::vector<particles::DualFacet> facets;
   last = std::min(last, cloud.boundary_particles.size());
   for (std::size_t b = first; b < last; ++b) {

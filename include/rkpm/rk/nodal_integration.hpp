@@ -20,6 +20,7 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
+#include "rkpm/particles/dual_cells.hpp"
 #include "rkpm/rk/rk_approximation.hpp"
 
 #include <cstdint>
@@ -109,10 +110,12 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
                                              std::uint32_t surface_bits = 0u);
 // The same for the facets of the boundary particles cloud.boundary_particles[first, last)
-// only, in the same order: a caller that reduces the quadrature as it goes builds it in
-// batches, so the whole surface's shape functions are never held at once.
-BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
-                                             std::uint32_t surface_bits, std::size_t first, std::size_t last);
+// only, in the same order, with the cloud's dual cells built once by the caller: a caller
+// that reduces the quadrature as it goes builds it in batches, so the whole surface's
+// shape functions are never held at once.
+BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const particles::DualCells& cells,
+                                             const RKApproximation& rk, std::uint32_t surface_bits,
+                                             std::size_t first, std::size_t last);
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk,
                                              const std::vector<char>& rows = {});
 

@@ -36,12 +36,13 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   // boundary particles, so that its shape functions (several times the folded rows) are
   // never held for the whole surface: at 1e6 particles of the RBC shell they were the
   // peak of the set-up's memory (docs/performance.md).
-  constexpr std::size_t batch = 4096;
+  constexpr std::size_t batch = 8192;
   Fold fold{std::vector<Vec3>(body.size(), Vec3::Zero()), std::vector<char>(body.size(), 0), {}};
   row_offset_.push_back(0);
+  const particles::DualCells cells(body.cloud);
   const std::size_t boundary = body.cloud.boundary_particles.size();
   for (std::size_t first = 0; first < boundary; first += batch)
-    fold_facets(rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit, first, first + batch), fold);
+    fold_facets(rk::build_boundary_quadrature(body.cloud, cells, *body.rk, surface_bit, first, first + batch), fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
