@@ -136,11 +136,12 @@ TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
 // bending part of the layer activity follows T / zeta_reference_thickness (0.43 here;
 // without the scaling this shell ends at 0.49, on the edge of the criterion).
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
-  const Relaxed r = relax(coarse_scene(kDriver, 0.9, 0.3e-6));
+  constexpr double seed_wall_thickness = 0.3e-6;  // [m]
+  const Relaxed r = relax(coarse_scene(kDriver, 0.9, seed_wall_thickness));
   expect_evans_fung_disc(r);
-  // A length, not a time: the wall on the axis [m] ends thinner than the 0.3 um it
-  // started with (the contractile inner half squeezes it).
-  EXPECT_LT(r.final.wall_thickness_centre, 0.3e-6);
+  // The wall on the axis ends thinner than it started (the contractile inner half
+  // squeezes it).
+  EXPECT_LT(r.final.wall_thickness_centre, seed_wall_thickness);
 }
 
 TEST(RedBloodCell, WithoutDriverTheShellStaysWhereItStarted) {
