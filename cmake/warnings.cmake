@@ -7,6 +7,11 @@ target_compile_options(rkpm_options INTERFACE
 if(RKPM_NATIVE)
   target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:-march=native>)
 endif()
+# No fused multiply-adds made by the compiler: a sum must round the same whether a
+# contribution is added where it is computed or recorded and added later (the ordered
+# scatter, rk/row_scatter.hpp), which is what makes runs on any thread and rank count
+# give the same bits. Only matters where the target has FMA (RKPM_NATIVE).
+target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:-ffp-contract=off>)
 if(RKPM_SANITIZE)
   # -O1 keeps the sanitized Debug build (assertions and debug information on) fast
   # enough to run the whole suite, which includes 30,000-particle clouds.

@@ -57,6 +57,30 @@ const Comm& Comm::self() {
   return single;
 }
 
+double Comm::sum(const ExactSum& value) const { return sum(std::vector<ExactSum>{value}).front(); }
+
+std::vector<double> Comm::sum(const std::vector<ExactSum>& values) const {
+  std::vector<ExactSum> total = values;
+  if (parallel()) {
+    constexpr int kWords = ExactSum::kWords;
+    std::vector<std::int64_t> mine, all(static_cast<std::size_t>(size_) * values.size() * kWords);
+    for (const auto& v : values) mine.insert(mine.end(), v.words().begin(), v.words().end());
+    MPI_Allgather(mine.data(), static_cast<int>(mine.size()), MPI_INT64_T, all.data(), static_cast<int>(mine.size()),
+                  MPI_INT64_T, MPI_COMM_WORLD);
+    for (auto& t : total) t = ExactSum{};
+    for (int r = 0; r < size_; ++r)
+      for (std::size_t k = 0; k < values.size(); ++k) {
+        ExactSum::Words words;
+        std::copy_n(all.data() + (static_cast<std::size_t>(r) * values.size() + k) * kWords, kWords, words.begin());
+        total[k] += ExactSum::from_words(words);
+      }
+  }
+  std::vector<double> out;
+  out.reserve(total.size());
+  for (const auto& t : total) out.push_back(t.value());
+  return out;
+}
+
 double Comm::sum(double value) const {
   const auto all = gather_values(*this, value);
   double s = 0.0;  // from zero, in rank order: the same bits on every rank

@@ -101,6 +101,22 @@ void GhostExchange::push_add(double* data, int stride) const {
     }
 }
 
+rk::RowScatter::Links GhostExchange::scatter_links() const {
+  rk::RowScatter::Links links;
+  links.rank = comm_->rank();
+  links.owned_begin = begin_;
+  links.owned_end = end_;
+  links.ghosts = &ghosts_;
+  links.holders = &holders_;
+  const Comm* comm = comm_;
+  links.exchange_counts = [comm](const std::vector<std::vector<std::int64_t>>& send,
+                                 std::vector<std::vector<std::int64_t>>& recv) { comm->exchange(send, recv); };
+  links.exchange_values = [comm](const std::vector<std::vector<double>>& send, std::vector<std::vector<double>>& recv) {
+    comm->exchange_known(send, recv);
+  };
+  return links;
+}
+
 std::size_t GhostExchange::ghost_count() const {
   std::size_t n = 0;
   for (const auto& g : ghosts_) n += g.size();

@@ -38,7 +38,7 @@ void edge_graph(const particles::Cloud& cloud, std::vector<idx_t>& xadj, std::ve
 }
 }  // namespace
 
-Partition partition_cloud(const particles::Cloud& cloud, int parts) {
+Partition partition_cloud(const particles::Cloud& cloud, int parts, PartitionMethod method) {
   const auto n = static_cast<Index>(cloud.size());
   if (parts < 1 || parts > n)
     throw std::invalid_argument(fmt::format("cannot split the {} particles of cloud '{}' into {} parts: a part "
@@ -49,6 +49,14 @@ Partition partition_cloud(const particles::Cloud& cloud, int parts) {
   std::iota(p.order.begin(), p.order.end(), 0);
   p.offset = {0, n};
   if (parts == 1) return p;
+  if (method == PartitionMethod::kCurve) {
+    // Equal ranges of the cloud's order; the first n % parts ranges one longer.
+    const Index base = n / parts, extra = n % parts;
+    p.offset.assign(static_cast<std::size_t>(parts) + 1, 0);
+    for (int r = 0; r < parts; ++r)
+      p.offset[static_cast<std::size_t>(r) + 1] = p.offset[static_cast<std::size_t>(r)] + base + (r < extra ? 1 : 0);
+    return p;
+  }
 
   std::vector<idx_t> xadj, adjncy;
   edge_graph(cloud, xadj, adjncy);

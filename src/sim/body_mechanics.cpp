@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 
 namespace rkpm::sim {
@@ -38,7 +39,9 @@ void pull_ghosts(Body& body, DirectorField* dir) {
 //   div_I += V_L flux_L b_I(X_L)                 (the Frank term's weak divergence),
 //   r_L = d_L - sum_I Psi_I(X_L) d_I,  f_L += W_L r_L,  f_I -= Psi_I(X_L) W_L r_L
 //                                                (the stabilization, rk/stabilization.hpp).
-// The scatter goes into per-thread buffers summed in thread order (rk/row_scatter.hpp).
+// The scatter goes into per-thread buffers; on several threads or ranks it is ordered
+// (rk/row_scatter.hpp): each particle's sum is made in the one-thread order, so the
+// force has the same bits on any thread and rank count.
 // `grad` is the operator's storage (op.grad or op.grad_float): the precision is
 // dispatched once per pass, so the row loops inline without a branch per row.
 template <class Stored, class Stress>
@@ -51,10 +54,26 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
   const int threads = omp_get_max_threads();
   auto& scatter = body.force_scatter;
   if (!scatter.planned_for(threads)) {
-    std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
-    if (stabilized) patterns.push_back({&N.row_offset, &N.col});
-    scatter.plan(body.owned_begin(), body.owned_end(), static_cast<Index>(body.size()), patterns, threads,
-                 frank ? 2 : 1);
+    const int channels = frank ? 2 : 1;
+    const auto n = static_cast<Index>(body.size());
+    if (threads == 1 && !body.distributed()) {
+      // One block: every sum is already in the reference order.
+      std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
+      if (stabilized) patterns.push_back({&N.row_offset, &N.col});
+      scatter.plan(n, n, patterns, threads, channels);
+    } else {
+      // The columns of each row's contributions, in the order the loop below makes them.
+      const auto columns = [&](Index L, int channel, const std::function<void(Index)>& emit) {
+        rk::scatter_columns(op, L, emit);
+        if (channel == 0 && stabilized) {
+          emit(L);
+          for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) emit(N.col[k]);
+        }
+      };
+      const rk::RowScatter::Links links = body.distributed() ? body.ghosts.scatter_links() : rk::RowScatter::Links{};
+      scatter.plan_ordered(body.owned_begin(), body.owned_end(), n, threads, channels, columns,
+                           body.distributed() ? &links : nullptr);
+    }
   }
   if (body.distributed()) pull_ghosts(body, frank ? dir : nullptr);
   std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
@@ -62,8 +81,6 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
   {
     const int t = omp_get_thread_num();
     scatter.clear(t);
-    Vec3* f = scatter.buffer(t, 0);
-    Vec3* div = frank ? scatter.buffer(t, 1) : nullptr;
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
       const Mat3 F = rk::deformation_gradient(op, grad, body.x, body.d, L);
@@ -73,37 +90,34 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
       const double w = op.weight[L];
+      const auto f = scatter.sink(t, 0, L);
       rk::scatter_row(op, grad, L, w, P, f);
       if (frank) {
         dir->frank_flux[L] = flux;
-        rk::scatter_row(op, grad, L, w, flux, div);
+        rk::scatter_row(op, grad, L, w, flux, scatter.sink(t, 1, L));
       }
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
         stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
         const Vec3 wr = stab.weight[L] * r;
         stab.residual[L] = wr;
-        f[L] += wr;
-        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) f[N.col[k]] -= N.psi[k] * wr;
+        f(L, wr);
+        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) f(N.col[k], Vec3(-(N.psi[k] * wr)));
       }
     }
     energy[static_cast<std::size_t>(t)] = stabilization_energy;
 #pragma omp barrier
-    // f holds f_int plus the stabilization's resistance; the body's force is minus that.
+    // The sums hold f_int plus the stabilization's resistance; the body's force is minus that.
     scatter.reduce(t, 0, -1.0, body.force);
     if (frank) scatter.reduce(t, 1, 1.0, dir->frank_divergence);
-#pragma omp barrier
-#pragma omp master
-    if (body.distributed()) {
-      body.ghosts.push_add(body.force);
-      if (frank) body.ghosts.push_add(dir->frank_divergence);
-    }
-#pragma omp barrier
-    if (frank) {
-      // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
-#pragma omp for schedule(static)
-      for (Index I = 0; I < static_cast<Index>(body.size()); ++I) dir->frank_divergence[I] /= -body.cloud.volume[I];
-    }
+  }
+  // The seams (particles the rows of several threads or ranks reach), in order.
+  scatter.fold(0, -1.0, body.force, false);
+  if (frank) {
+    scatter.fold(1, 1.0, dir->frank_divergence, false);
+    // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
+#pragma omp parallel for schedule(static)
+    for (Index I = 0; I < static_cast<Index>(body.size()); ++I) dir->frank_divergence[I] /= -body.cloud.volume[I];
   }
   body.stabilization_energy = 0.0;
   for (double e : energy) body.stabilization_energy += e;
@@ -137,15 +151,15 @@ Mat3 first_piola_at(const Body& body, Index L) {
 
 double strain_energy(const Body& body) {
   const DirectorField* dir = director_of(body);
-  double total = 0.0;
+  ExactSum total;
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(+ : total)
         for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
-          total += body.gradient.weight[L] * material.energy(L, body.F[L], dir);
+          total.add(body.gradient.weight[L] * material.energy(L, body.F[L], dir));
       },
       body.material);
-  return total + body.stabilization_energy;
+  return total.value() + body.stabilization_energy;
 }
 
 void physical_displacement(const Body& body, std::vector<Vec3>& u) {

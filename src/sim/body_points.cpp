@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace rkpm::sim {
 
@@ -26,31 +27,53 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
     for (Index i = begin; i < end; ++i) body.force[i] += f[i];
     return;
   }
-  // Distributed: the owned rows' transfer lands on owned particles and ghosts alike;
-  // the ghosts' part goes back to the owners (as in the list version below).
-  const bool distributed = body.distributed();
-  if (distributed) body.point_force_ghosts.assign(body.size(), Vec3::Zero());
-  std::vector<Vec3>& out = distributed ? body.point_force_ghosts : body.force;
+  // Ordered on several threads or ranks (rk/row_scatter.hpp): each particle gets
+  // force + (the transfer's sum in row order), the same bits on any split. Distributed:
+  // the owned rows' transfer lands on owned particles and ghosts alike; the ghosts'
+  // part goes to the owners as records.
   auto& scatter = body.point_force_scatter;
   const int threads = omp_get_max_threads();
-  if (!scatter.planned_for(threads)) scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
+  if (!scatter.planned_for(threads)) {
+    if (threads == 1 && !body.distributed()) {
+      scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
+    } else {
+      const rk::RowScatter::Links links = body.distributed() ? body.ghosts.scatter_links() : rk::RowScatter::Links{};
+      scatter.plan_ordered(
+          begin, end, n, threads, 1,
+          [&](Index J, int, const std::function<void(Index)>& emit) {
+            for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) emit(N.col[k]);
+          },
+          body.distributed() ? &links : nullptr);
+    }
+  }
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
     scatter.clear(t);
-    Vec3* sum = scatter.buffer(t, 0);
     for (Index J = std::max(scatter.row_begin(t), begin); J < std::min(scatter.row_end(t), end); ++J) {
       const Vec3& fJ = f[J];
-      if (fJ.isZero(0.0)) continue;  // most particles carry no point force
-      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sum[N.col[k]] += N.psi[k] * fJ;
+      const auto sink = scatter.sink(t, 0, J);
+      // Most particles carry no point force; a row at a seam still records its zeros.
+      if (fJ.isZero(0.0) && !sink.records()) continue;
+      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sink(N.col[k], Vec3(N.psi[k] * fJ));
     }
 #pragma omp barrier
-    scatter.reduce_add(t, 0, 1.0, out);
+    scatter.reduce_add(t, 0, 1.0, body.force);
   }
-  if (distributed) {
-    body.ghosts.push_add(body.point_force_ghosts);
-    for (Index I = begin; I < end; ++I) body.force[I] += body.point_force_ghosts[I];
-  }
+  scatter.fold(0, 1.0, body.force, true);
+}
+
+void plan_term_rows(rk::RowScatter& scatter, const Body& body, Index first, Index end, int channels,
+                    const rk::RowScatter::RowColumns& columns, const par::GhostExchange* ghosts) {
+  if (ghosts == nullptr) ghosts = &body.ghosts;
+  const bool linked = body.distributed() && ghosts->built();
+  const rk::RowScatter::Links links = linked ? ghosts->scatter_links() : rk::RowScatter::Links{};
+  scatter.plan_ordered(first, end, static_cast<Index>(body.size()), 1, channels, columns, linked ? &links : nullptr);
+}
+
+void add_term_rows(rk::RowScatter& scatter, int channel, double scale, std::vector<Vec3>& out) {
+  scatter.reduce_add(0, channel, scale, out);
+  scatter.fold(channel, scale, out, true);
 }
 
 std::vector<char> readable_particles(const Body& body) {

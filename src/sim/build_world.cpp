@@ -184,8 +184,12 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     } catch (const std::invalid_argument& e) {
       throw SetupError(fmt::format("{} body '{}': {}", where(spec.cloud), body->name, e.what()));
     }
-    particles::renumber(body->cloud, partition.order);
-    body->original_id.assign(partition.order.begin(), partition.order.end());
+    // The curve partition keeps the one-process numbering (par/partition.hpp): nothing
+    // to renumber, and the particle ids are already the one-process ones.
+    if (!std::is_sorted(partition.order.begin(), partition.order.end())) {
+      particles::renumber(body->cloud, partition.order);
+      body->original_id.assign(partition.order.begin(), partition.order.end());
+    }
   }
   const auto& cloud = body->cloud;
   const std::size_t n = cloud.size();

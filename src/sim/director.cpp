@@ -12,11 +12,11 @@ using materials::lce::director_point;
 // computed by the force loop), over this rank's points.
 double director_energy(const Body& body, const materials::LiquidCrystalElastomer& model) {
   const DirectorField& dir = *body.director;
-  double total = 0.0;
+  ExactSum total;
 #pragma omp parallel for schedule(static) reduction(+ : total)
   for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
-    total += body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L));
-  return total;
+    total.add(body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L)));
+  return total.value();
 }
 }  // namespace
 

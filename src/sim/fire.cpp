@@ -21,27 +21,21 @@ void stop_bodies(World& world) {
 }
 
 FireStep Fire::update(World& world, double dt, double dt_max) {
-  // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body (and rank).
-  // Each body's sums start from zero and are added after the loop: an OpenMP reduction
-  // onto a non-zero total combines the threads' parts in arrival order, which would
-  // make a multi-body run depend on thread timing.
-  double power = 0.0, vv = 0.0, ff = 0.0;
+  // P = F . v, |v|^2 and |F|^2 over every degree of freedom of every body (and rank),
+  // summed exactly: they steer every step, so their bits must not depend on how the
+  // particles are split over threads and ranks (common/exact_sum.hpp).
+  ExactSum power_sum, vv_sum, ff_sum;
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
-    double body_power = 0.0, body_vv = 0.0, body_ff = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : body_power, body_vv, body_ff)
+#pragma omp parallel for schedule(static) reduction(+ : power_sum, vv_sum, ff_sum)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
-      body_power += b.force[i].dot(b.v[i]);
-      body_vv += b.v[i].squaredNorm();
-      body_ff += b.force[i].squaredNorm();
+      power_sum.add(b.force[i].dot(b.v[i]));
+      vv_sum.add(b.v[i].squaredNorm());
+      ff_sum.add(b.force[i].squaredNorm());
     }
-    power += body_power;
-    vv += body_vv;
-    ff += body_ff;
   }
-  power = world.comm->sum(power);
-  vv = world.comm->sum(vv);
-  ff = world.comm->sum(ff);
+  const std::vector<double> sums = world.comm->sum(std::vector<ExactSum>{power_sum, vv_sum, ff_sum});
+  const double power = sums[0], vv = sums[1], ff = sums[2];
   FireStep result;
   result.dt = dt;
   if (power > 0.0) {

@@ -219,17 +219,15 @@ double Integrator::damping() const { return settings_.mode == Mode::Dynamic ? se
 void Integrator::first_kick_and_drift(StepBook& book) {
   const double h = book.h;
   const double c = damping();
-  double damping_power = 0.0;
+  ExactSum damping_power;  // exact: see kinetic_energy (world.cpp)
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
-    double body_power = 0.0;  // from zero, then added: see kinetic_energy (world.cpp)
-#pragma omp parallel for schedule(static) reduction(+ : body_power)
+#pragma omp parallel for schedule(static) reduction(+ : damping_power)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       b.v[i] += 0.5 * h * (b.a[i] - c * b.v[i]);
-      body_power += c * b.inertia[i] * b.v[i].squaredNorm();
+      damping_power.add(c * b.inertia[i] * b.v[i].squaredNorm());
       b.d[i] += h * b.v[i];
     }
-    damping_power += body_power;
     b.constraints.advance(h, b.d, b.v);
     update_positions(b);
   }

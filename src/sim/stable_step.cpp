@@ -22,15 +22,13 @@ void transformed_forces(World& world) {
 // sum over every body of |y_I|^2 at the particles this rank owns, each body's sum from
 // zero, reduced over the ranks, and added in body order (see kinetic_energy in world.cpp).
 double squared_norm(const World& world, const std::vector<std::vector<Vec3>>& y) {
-  double total = 0.0;
+  ExactSum total;  // exact: the same bits on any thread and rank count
   for (std::size_t b = 0; b < y.size(); ++b) {
     const Body& body = *world.bodies[b];
-    double body_sum = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : body_sum)
-    for (Index i = body.owned_begin(); i < body.owned_end(); ++i) body_sum += y[b][i].squaredNorm();
-    total += world.comm->sum(body_sum);
+#pragma omp parallel for schedule(static) reduction(+ : total)
+    for (Index i = body.owned_begin(); i < body.owned_end(); ++i) total.add(y[b][i].squaredNorm());
   }
-  return total;
+  return world.comm->sum(total);
 }
 
 // Zeroes the components the essential boundary conditions hold.

@@ -9,16 +9,12 @@ void compute_forces(World& world) {
 }
 
 double kinetic_energy(const World& world) {
-  double ke = 0.0;
+  // Exact: the same bits on any thread and rank count (common/exact_sum.hpp).
+  ExactSum ke;
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
-    // Each body's sum starts from zero: an OpenMP reduction onto a non-zero total
-    // combines the threads' parts in arrival order, so a multi-body run would depend
-    // on thread timing. (Two threads' parts added to zero commute exactly.)
-    double body_ke = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : body_ke)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) body_ke += 0.5 * b.inertia[i] * b.v[i].squaredNorm();
-    ke += body_ke;
+#pragma omp parallel for schedule(static) reduction(+ : ke)
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) ke.add(0.5 * b.inertia[i] * b.v[i].squaredNorm());
   }
   return world.comm->sum(ke);
 }

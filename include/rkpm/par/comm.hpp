@@ -10,6 +10,7 @@
 // a rerun reproduces it (MPI_Allreduce does not promise either for floating point).
 #pragma once
 
+#include "rkpm/common/exact_sum.hpp"
 #include "rkpm/common/types.hpp"
 
 #include <cstdint>
@@ -33,6 +34,12 @@ class Comm {
   int node_size() const { return node_size_; }
 
   // Reductions over the ranks, the same on every rank.
+  // Exact sums merged over the ranks and rounded once: the same bits for any split of
+  // the terms over ranks and threads (common/exact_sum.hpp). What steers a run is
+  // summed this way; `sum(double)` adds the ranks' values in rank order.
+  double sum(const ExactSum& value) const;
+  // The same for several sums in one collective; returns their values in order.
+  std::vector<double> sum(const std::vector<ExactSum>& values) const;
   double sum(double value) const;
   std::int64_t sum(std::int64_t value) const;
   double min(double value) const;

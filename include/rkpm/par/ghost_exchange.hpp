@@ -47,6 +47,11 @@ class GhostExchange {
 
   // This rank's ghosts, grouped by owner rank, each group sorted.
   const std::vector<std::vector<Index>>& ghosts_by_owner() const { return ghosts_; }
+  // This rank's particles that other ranks hold, grouped by holder rank, each sorted.
+  const std::vector<std::vector<Index>>& holders_by_rank() const { return holders_; }
+  // What an ordered scatter needs to fold the ranks' contributions in the one-process
+  // order (rk/row_scatter.hpp). The layer must outlive the scatter's plan.
+  rk::RowScatter::Links scatter_links() const;
   // Every rank's range: rank r owns [offset()[r], offset()[r+1]).
   const std::vector<Index>& offset() const { return offset_; }
   Index begin() const { return begin_; }

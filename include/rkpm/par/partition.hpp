@@ -1,18 +1,21 @@
 // Partition of a body's particles over the ranks of a run, made once on the
-// reference configuration.
+// reference configuration. A rank owns one contiguous range [offset[r], offset[r+1])
+// of every body, so every loop over owned particles is a plain range.
 //
-// Why METIS over the mesh's edge graph: the operators of total-Lagrangian RKPM are
-// fixed, and each step a rank exchanges the displacements of the particles its rows
-// reference but do not own (ghosts). The kernel supports span a few mesh edges
-// around each particle, so a partition that cuts few mesh edges has few ghosts. METIS
-// k-way minimises exactly that cut, with balanced parts, from a graph that exists
-// before the operators are built; coordinate bisection would ignore a thin shell's
-// through-thickness connectivity and cut across its wall. METIS is deterministic for
-// a fixed seed, so the same cloud and rank count always give the same partition.
-//
-// The particles are then renumbered so that each part is one contiguous range (in
-// the cloud's previous order within the part): a rank owns particles [offset[r],
-// offset[r+1]) of every body, and every loop over owned particles is a plain range.
+// Two methods:
+// - `kCurve` (what runs use): the cloud's own order cut into equal ranges. The cloud is
+//   numbered along a Morton curve (rk.particle_order, particles/renumber.hpp), so each
+//   range is a compact piece of the body, and the particles keep their one-process
+//   numbers. That is what makes a run on any rank count compute the same bits as one
+//   process: every rank builds each row of the operators from the same neighbours in
+//   the same order, and the sums over particles follow the one-process numbering
+//   (rk/row_scatter.hpp, common/exact_sum.hpp). On a block, the first cut of a Morton
+//   order is a plane through the middle, the best cut there is.
+// - `kMetis`: METIS k-way over the mesh's edge graph, which minimises the cut edges
+//   (the ghosts) on any shape, then renumbered so that each part is contiguous. It
+//   cuts a shell or a sphere into parts with somewhat fewer ghosts, but the renumbering
+//   changes every summation order, so its runs match one process only to round-off
+//   carried along the run (docs/distributed.md). Kept for the partition study.
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -28,9 +31,12 @@ struct Partition {
   std::vector<Index> offset;        // parts + 1: part r holds the new ids [offset[r], offset[r+1])
 };
 
-// Parts of the cloud's mesh-edge graph, balanced in particle count. One part is the
-// identity. Throws std::invalid_argument for more parts than particles.
-Partition partition_cloud(const particles::Cloud& cloud, int parts);
+enum class PartitionMethod { kCurve, kMetis };
+
+// Parts balanced in particle count (kCurve: sizes differ by at most one). One part is
+// the identity. Throws std::invalid_argument for more parts than particles.
+Partition partition_cloud(const particles::Cloud& cloud, int parts,
+                          PartitionMethod method = PartitionMethod::kCurve);
 
 // Edges of the mesh cut by the partition (after renumbering: ranges `offset`), a
 // measure of its quality for the partition study.

@@ -164,24 +164,40 @@ Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, c
   return g;
 }
 
-template <class Stored>
+// Row L's contributions w M b_I(X_L), handed to add(I, c) in the row's order: its
+// entries, then (single precision) the own-particle correction at L.
+// `scatter_columns` names the same columns in the same order (an ordered
+// rk::RowScatter plans with it).
+template <class Stored, class Add>
 void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M_in,
-                 Vec3* out) {
+                 const Add& add) {
   const Mat3 M = M_in;
   const Index* col = op.col.data();
   const Stored* b = grad.data();
   const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
   if constexpr (std::is_same_v<Stored, Vec3>) {
-    for (Index k = k0; k < k1; ++k) out[col[k]].noalias() += w * (M * b[k]);
+    for (Index k = k0; k < k1; ++k) add(col[k], Vec3(w * (M * b[k])));
   } else {
     Vec3 row_sum = Vec3::Zero();
     for (Index k = k0; k < k1; ++k) {
       const Vec3 bk = b[k].template cast<double>();
-      out[col[k]].noalias() += w * (M * bk);
+      add(col[k], Vec3(w * (M * bk)));
       row_sum += bk;
     }
-    out[L].noalias() -= w * (M * row_sum);
+    add(L, Vec3(-(w * (M * row_sum))));
   }
+}
+
+template <class Stored>
+void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M,
+                 Vec3* out) {
+  scatter_row(op, grad, L, w, M, [out](Index I, const Vec3& c) { out[I] += c; });
+}
+
+template <class Emit>
+void scatter_columns(const GradientOperator& op, Index L, const Emit& emit) {
+  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) emit(op.col[k]);
+  if (op.single_precision()) emit(L);
 }
 
 // F_L in the form the storage needs (see deformation_gradient below).

@@ -89,7 +89,6 @@ struct Body {
   // which the force pass pulls from their owners. One rank owns everything.
   par::GhostExchange ghosts;               // built only when the run has more than one rank
   par::GhostExchange output_halo;          // distributed: the nodes of this rank's output cells it does not own
-  std::vector<Vec3> point_force_ghosts;    // distributed: scratch of add_point_forces (body_points.hpp)
   std::vector<std::int64_t> original_id;   // distributed: each particle's id in a one-rank run
   bool distributed() const { return ghosts.built(); }
   Index owned_begin() const { return distributed() ? ghosts.begin() : 0; }

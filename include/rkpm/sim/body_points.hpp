@@ -11,7 +11,9 @@
 
 #include "rkpm/sim/body.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,40 +27,62 @@ void physical_points(const Body& body, std::vector<Vec3>& out);
 // is indexed by particle (its other entries untouched).
 void physical_points(const Body& body, const std::vector<Index>& particles, std::vector<Vec3>& out);
 
+// A term's sums over its own rows (list entries, faces, facets, pairs), made in the
+// one-process order on any rank count (rk/row_scatter.hpp): the rows [first, end) this
+// rank evaluates must be a contiguous range, and the ranks' ranges in rank order the
+// one-process rows in order (rows grouped by a particle the rank owns, in increasing
+// particle order, are). Serial: one block. `columns(row, channel, emit)` names each
+// row's contributions in the order the term makes them; `ghosts` is the exchange that
+// holds the columns this rank reaches but does not own (null: the body's own ghosts).
+void plan_term_rows(rk::RowScatter& scatter, const Body& body, Index first, Index end, int channels,
+                    const rk::RowScatter::RowColumns& columns, const par::GhostExchange* ghosts = nullptr);
+// After a pass (scatter.clear(0), then the rows through scatter.sink(0, channel, row) in
+// increasing order): out[I] += scale * the sum of the contributions at I, at every
+// particle this rank owns (collective on a distributed body).
+void add_term_rows(rk::RowScatter& scatter, int channel, double scale, std::vector<Vec3>& out);
+
 // Generalized forces of point forces at every particle: force_I += sum_J Psi_I(X_J) f_J,
-// scattered from the interpolation's rows into per-thread buffers summed in thread
-// order (rk/row_scatter.hpp: deterministic for a thread count, no stored transpose).
+// scattered from the interpolation's rows into per-thread buffers, ordered over
+// threads and ranks (rk/row_scatter.hpp: the same bits on any split, no stored
+// transpose).
 // Distributed: f is read at this rank's own particles only, and must be their whole
 // force there (contributions made on other ranks already added).
 void add_point_forces(Body& body, const std::vector<Vec3>& f);
 
-// The same for forces at a few listed particles (a surface, the pairs in contact):
-// force_I += sum_i (scale Psi_I(X_{J_i})) f_i with J_i = particles[i] and f_i =
-// force_at(i). A serial scatter in list order: cheap for a small set and deterministic.
-// Zero forces are skipped.
+// The same for forces at a few listed particles (a surface, the pairs in contact),
+// listed in increasing order: force_I += sum_i (scale Psi_I(X_{J_i})) f_i with
+// J_i = particles[i] and f_i = force_at(i). A serial scatter in list order (cheap for a
+// small set), ordered over the ranks through the caller's `scatter` (planned on first
+// use; the list must not change afterwards). Distributed: a rank transfers the forces
+// of the listed particles it owns (it holds their interpolation rows).
 template <class ForceAt>
-void add_point_forces(Body& body, const std::vector<Index>& particles, double scale, ForceAt force_at) {
+void add_point_forces(Body& body, const std::vector<Index>& particles, double scale, ForceAt force_at,
+                      rk::RowScatter& scatter) {
   const auto& N = body.interpolation;
-  // Distributed: a rank holds the interpolation rows of its own particles only, so only
-  // their forces are transferred; what they put on ghosts goes back to the owners.
-  const bool distributed = body.distributed();
-  if (distributed) body.point_force_ghosts.assign(body.size(), Vec3::Zero());
-  std::vector<Vec3>& out = distributed ? body.point_force_ghosts : body.force;
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    const Index J = particles[i];
-    if (distributed && (J < body.owned_begin() || J >= body.owned_end())) continue;
-    const Vec3& f = force_at(i);
-    if (f.isZero(0.0)) continue;
-    if (N.row_offset.empty()) {
-      out[J] += scale * f;
+  const bool rows = !N.row_offset.empty();
+  const auto first = static_cast<Index>(std::lower_bound(particles.begin(), particles.end(), body.owned_begin()) -
+                                        particles.begin());
+  const auto end = static_cast<Index>(std::lower_bound(particles.begin(), particles.end(), body.owned_end()) -
+                                      particles.begin());
+  if (!scatter.planned_for(1))
+    plan_term_rows(scatter, body, first, end, 1, [&](Index i, int, const std::function<void(Index)>& emit) {
+      const Index J = particles[static_cast<std::size_t>(i)];
+      if (!rows) return emit(J);
+      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) emit(N.col[k]);
+    });
+  scatter.clear(0);
+  for (Index i = first; i < end; ++i) {
+    const Index J = particles[static_cast<std::size_t>(i)];
+    const Vec3& f = force_at(static_cast<std::size_t>(i));
+    const auto sink = scatter.sink(0, 0, i);
+    if (f.isZero(0.0) && !sink.records()) continue;  // a row at a seam still records its zeros
+    if (!rows) {
+      sink(J, Vec3(scale * f));
       continue;
     }
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) out[N.col[k]] += (scale * N.psi[k]) * f;
+    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sink(N.col[k], Vec3((scale * N.psi[k]) * f));
   }
-  if (distributed) {
-    body.ghosts.push_add(body.point_force_ghosts);
-    for (Index I = body.owned_begin(); I < body.owned_end(); ++I) body.force[I] += body.point_force_ghosts[I];
-  }
+  add_term_rows(scatter, 0, 1.0, body.force);
 }
 
 // Distributed: 1 for each particle this rank owns or holds as a ghost (whose values it

@@ -12,9 +12,9 @@ void BodyForce::add_forces(World&) {
 }
 
 double BodyForce::power(const World& world) const {
-  double p = 0.0;
+  ExactSum p;
 #pragma omp parallel for schedule(static) reduction(+ : p)
-  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) p += body_.mass[i] * g_.dot(body_.v[i]);
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) p.add(body_.mass[i] * g_.dot(body_.v[i]));
   return world.comm->sum(p);
 }
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <chrono>
 #include <cstdint>
 #include <cmath>
@@ -58,7 +59,7 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 
 Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& comm)
     : a_(a), b_(b), comm_(comm), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
-      pairs_(s.cutoff, s.skin), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1) {
+      pairs_(s.cutoff, s.skin, {}, false), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
   molecules_[1] = molecules_of(b, s.beta[1]);
@@ -140,7 +141,16 @@ void Contact::add_forces(World&) {
   const bool stale = moved > 0.5 * pairs_.skin();
   if (split && stale) choose_partner_ghosts();
   if (split) partner_ghosts_.pull(points_[1]);
-  if (stale) pairs_.rebuild(points_[0], row_begin, row_end, points_[1], columns_);
+  if (stale) {
+    pairs_.rebuild(points_[0], row_begin, row_end, points_[1], columns_);
+    // B's sums run over A's rows in increasing order, each row's partners in the list's.
+    plan_term_rows(
+        b_sums_, b_, row_begin, row_end, 2,
+        [this](Index i, int, const std::function<void(Index)>& emit) {
+          for (Index k = pairs_.row_offset()[i]; k < pairs_.row_offset()[i + 1]; ++k) emit(pairs_.partner()[k]);
+        },
+        split ? &partner_ghosts_ : nullptr);
+  }
   const auto& pa = points_[0];
   const auto& pb = points_[1];
   const auto& offset = pairs_.row_offset();
@@ -174,24 +184,19 @@ void Contact::add_forces(World&) {
     row_energy_[i] = e;
     force_[0][i] = fi;
   }
-  // B's particles gather their pairs through the transpose (ordered by A's id); a
-  // ghost's sum then goes to its owner.
-  const auto& col_offset = pairs_.column_offset();
-  const auto& col_entry = pairs_.column_entry();
-  const auto cols = static_cast<Index>(columns_.size());
-#pragma omp parallel for schedule(dynamic, 64)
-  for (Index c = 0; c < cols; ++c) {
-    const Index j = columns_[c];
-    Vec3 fj = Vec3::Zero();
-    for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) fj -= pair_force_[col_entry[k]];
-    force_[1][j] = fj;
+  // B's particles sum their pairs in A's order, across the ranks too (plan_term_rows).
+  std::fill(force_[1].begin(), force_[1].end(), Vec3::Zero());
+  b_sums_.clear(0);
+  for (Index i = row_begin; i < row_end; ++i) {
+    const auto sink = b_sums_.sink(0, 0, i);
+    for (Index k = offset[i]; k < offset[i + 1]; ++k) sink(partner[k], Vec3(-pair_force_[k]));
   }
-  if (split) partner_ghosts_.push_add(force_[1]);
+  add_term_rows(b_sums_, 0, 1.0, force_[1]);
   add_point_forces(a_, force_[0]);
   add_point_forces(b_, force_[1]);
 
-  double energy = 0.0;  // serial, in particle order: the same sum for any thread count
-  for (Index i = row_begin; i < row_end; ++i) energy += row_energy_[i];
+  ExactSum energy;
+  for (Index i = row_begin; i < row_end; ++i) energy.add(row_energy_[i]);
   energy_ = comm_.sum(energy);
   active_pairs_ = static_cast<std::size_t>(comm_.sum(static_cast<std::int64_t>(active)));
   ++evaluations_;
@@ -209,7 +214,7 @@ double Contact::stable_dt(const World&) const {
   const auto& nb = molecules_[1];
   const double rc2 = cutoff_ * cutoff_;
   // Per listed pair inside the cutoff: k_IJ; per particle the Gershgorin row sum.
-  std::vector<double> row_a(a_.size(), 0.0), row_b(b_.size(), 0.0);
+  std::vector<double> row_a(a_.size(), 0.0);
 #pragma omp parallel for schedule(dynamic, 64)
   for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) {
     double g = 0.0;
@@ -222,27 +227,27 @@ double Contact::stable_dt(const World&) const {
     }
     row_a[i] = g;
   }
-  const auto& col_offset = pairs_.column_offset();
-  const auto& col_entry = pairs_.column_entry();
-  const auto& entry_row = pairs_.entry_row();
-  const auto cols = static_cast<Index>(columns_.size());
-#pragma omp parallel for schedule(dynamic, 64)
-  for (Index c = 0; c < cols; ++c) {
-    const Index j = columns_[c];
-    double g = 0.0;
-    for (Index k = col_offset[j]; k < col_offset[j + 1]; ++k) {
-      const Index i = entry_row[col_entry[k]];
+  // B's row sums in x, in A's order over the ranks (plan_term_rows); pairs beyond the
+  // cutoff add zero.
+  std::vector<Vec3> b_rows(b_.size(), Vec3::Zero());
+  b_sums_.clear(0);
+  for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) {
+    const auto sink = b_sums_.sink(0, 1, i);
+    for (Index k = offset[i]; k < offset[i + 1]; ++k) {
+      const Index j = partner[k];
       const double r2 = (points_[0][i] - points_[1][j]).squaredNorm();
-      if (r2 >= rc2) continue;
-      const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
-      g += kij * (1.0 / b_.inertia[j] + 1.0 / std::sqrt(a_.inertia[i] * b_.inertia[j]));
+      double g = 0.0;
+      if (r2 < rc2) {
+        const double kij = na[i] * nb[j] * lj_.stiffness(std::sqrt(r2));
+        g = kij * (1.0 / b_.inertia[j] + 1.0 / std::sqrt(a_.inertia[i] * b_.inertia[j]));
+      }
+      sink(j, Vec3(g, 0.0, 0.0));
     }
-    row_b[j] = g;
   }
-  if (b_.distributed()) partner_ghosts_.push_add(row_b.data(), 1);
+  add_term_rows(b_sums_, 1, 1.0, b_rows);
   double omega2 = 0.0;
   for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) omega2 = std::max(omega2, row_a[i]);
-  for (Index j = b_.owned_begin(); j < b_.owned_end(); ++j) omega2 = std::max(omega2, row_b[j]);
+  for (Index j = b_.owned_begin(); j < b_.owned_end(); ++j) omega2 = std::max(omega2, b_rows[j].x());
   omega2 = comm_.max(omega2);
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }

@@ -126,6 +126,9 @@ class Contact final : public Term {
   std::vector<double> row_energy_;  // per particle of A
   std::vector<Index> columns_;      // the particles of B this rank's rows may pair with, increasing
   par::GhostExchange partner_ghosts_;  // distributed: the B ghosts among them
+  // The pairs' sums at B's particles (channel 0: the force; 1: the stiffness rows of the
+  // stable step), over A's rows in the one-process order; planned at each rebuild.
+  mutable rk::RowScatter b_sums_;
   double energy_ = 0.0, mu_reference_ = 0.0;
   std::size_t active_pairs_ = 0;
   StiffnessLaw law_;

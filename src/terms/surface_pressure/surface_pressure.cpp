@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 
 namespace rkpm::sim {
@@ -19,6 +20,14 @@ SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double p
       quadrature_(rk::build_boundary_quadrature(body.cloud, *body.rk, surface_bit)),
       pressure_(pressure),
       force_(body.size(), Vec3::Zero()) {
+  // A cell's facets are listed together, cells in increasing order: a rank's cells' are
+  // one range.
+  const auto& owner = quadrature_.owner;
+  first_facet_ = static_cast<Index>(std::lower_bound(owner.begin(), owner.end(), body.owned_begin()) - owner.begin());
+  end_facet_ = static_cast<Index>(std::lower_bound(owner.begin(), owner.end(), body.owned_end()) - owner.begin());
+  plan_term_rows(scatter_, body, first_facet_, end_facet_, 1, [this](Index f, int, const std::function<void(Index)>& emit) {
+    for (Index k = quadrature_.row_offset[f]; k < quadrature_.row_offset[f + 1]; ++k) emit(quadrature_.col[k]);
+  });
   if (!body.distributed()) return;
   // The facets of the owned cells reach the cell's gradient-row columns: owned
   // particles or ghosts. Anything else would be a force silently dropped.
@@ -37,21 +46,22 @@ SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double p
 void SurfacePressure::add_forces(World&) {
   const auto& q = quadrature_;
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
-  // Serial over facets: scattering to particles in a fixed order keeps the sum deterministic.
-  const Index begin = body_.owned_begin(), end = body_.owned_end();
-  for (std::size_t f = 0; f < q.point.size(); ++f) {
-    if (q.owner[f] < begin || q.owner[f] >= end) continue;  // another rank's cell
+  // Serial over this rank's facets, ordered over the ranks (plan_term_rows).
+  scatter_.clear(0);
+  for (Index f = first_facet_; f < end_facet_; ++f) {
     const Mat3& F = body_.F[q.owner[f]];
     const Vec3 current_area = F.determinant() * F.inverse().transpose() * q.area[f];
-    for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k) force_[q.col[k]] -= pressure_ * q.psi[k] * current_area;
+    const auto sink = scatter_.sink(0, 0, f);
+    for (Index k = q.row_offset[f]; k < q.row_offset[f + 1]; ++k)
+      sink(q.col[k], Vec3(-(pressure_ * q.psi[k] * current_area)));
   }
-  if (body_.distributed()) body_.ghosts.push_add(force_);
-  for (Index i = begin; i < end; ++i) body_.force[i] += force_[i];
+  add_term_rows(scatter_, 0, 1.0, force_);
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) body_.force[i] += force_[i];
 }
 
 double SurfacePressure::power(const World&) const {
-  double p = 0.0;
-  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) p += force_[i].dot(body_.v[i]);
+  ExactSum p;
+  for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i) p.add(force_[i].dot(body_.v[i]));
   return comm_.sum(p);
 }
 

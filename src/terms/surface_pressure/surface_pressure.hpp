@@ -30,6 +30,8 @@ class SurfacePressure final : public Term {
   rk::BoundaryQuadrature quadrature_;  // the surface's facets: built for this term alone
   double pressure_;
   std::vector<Vec3> force_;          // last forces, for the power (distributed: at owned particles)
+  Index first_facet_ = 0, end_facet_ = 0;  // this rank's facets: those of its cells
+  rk::RowScatter scatter_;           // the facets' sums, in the one-process order
 };
 
 }  // namespace rkpm::sim

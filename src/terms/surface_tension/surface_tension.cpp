@@ -9,6 +9,7 @@
 #include "rkpm/io/json.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -62,6 +63,13 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
   }
   if (faces_.empty())
     throw std::invalid_argument("surface_tension: surface '" + surface + "' of body '" + body.name + "' has no faces");
+  // Faces in order of their lowest node (then as listed): each rank's faces, those whose
+  // lowest node it owns, are then one range of the one-process order.
+  const auto lowest = [&](std::int32_t f) {
+    const auto& face = cloud.boundary_faces[static_cast<std::size_t>(f)];
+    return *std::min_element(face.nodes, face.nodes + face.n_nodes);
+  };
+  std::stable_sort(faces_.begin(), faces_.end(), [&](std::int32_t a, std::int32_t b) { return lowest(a) < lowest(b); });
   for (auto f : faces_)
     for (int k = 0; k < cloud.boundary_faces[f].n_nodes; ++k) nodes_.push_back(cloud.boundary_faces[f].nodes[k]);
   std::sort(nodes_.begin(), nodes_.end());
@@ -80,6 +88,12 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
     faces_ = std::move(mine);
     face_ghosts_.build(comm, body.ghosts.offset(), std::move(ghosts));
   }
+  plan_term_rows(face_sums_, body, 0, static_cast<Index>(faces_.size()), 2,
+                 [this](Index r, int, const std::function<void(Index)>& emit) {
+                   const auto& face = body_.cloud.boundary_faces[static_cast<std::size_t>(faces_[static_cast<std::size_t>(r)])];
+                   for (int k = 0; k < face.n_nodes; ++k) emit(face.nodes[k]);
+                 },
+                 &face_ghosts_);
   points_.assign(body.size(), Vec3::Zero());
   gradient_.assign(body.size(), Vec3::Zero());
   initial_area_ = area_ = measure_area();
@@ -92,26 +106,29 @@ void SurfaceTension::update_points() const {
 
 double SurfaceTension::measure_area() const {
   update_points();
-  double area = 0.0;
-  for (auto f : faces_) area += face_area(body_.cloud.boundary_faces[f], points_, nullptr);
+  ExactSum area;
+  for (auto f : faces_) area.add(face_area(body_.cloud.boundary_faces[f], points_, nullptr));
   return comm_.sum(area);
 }
 
 void SurfaceTension::add_forces(World&) {
-  // Serial over faces and nodes: the scatters run in a fixed order.
+  // Serial over faces and nodes, ordered over the ranks (plan_term_rows).
   update_points();
   const auto& faces = body_.cloud.boundary_faces;
   for (Index J : nodes_) gradient_[J].setZero();
-  double area = 0.0;
-  for (auto f : faces_) {
-    const auto& face = faces[f];
+  ExactSum area;
+  face_sums_.clear(0);
+  for (std::size_t r = 0; r < faces_.size(); ++r) {
+    const auto& face = faces[static_cast<std::size_t>(faces_[r])];
     Vec3 grad[4] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
-    area += face_area(face, points_, grad);
-    for (int k = 0; k < face.n_nodes; ++k) gradient_[face.nodes[k]] += grad[k];
+    area.add(face_area(face, points_, grad));
+    const auto sink = face_sums_.sink(0, 0, static_cast<Index>(r));
+    for (int k = 0; k < face.n_nodes; ++k) sink(face.nodes[k], grad[k]);
   }
-  if (face_ghosts_.built()) face_ghosts_.push_add(gradient_);
+  add_term_rows(face_sums_, 0, 1.0, gradient_);
   // f_I = -gamma sum_J Psi_I(X_J) dA/dp_J (distributed: at the owned nodes).
-  add_point_forces(body_, nodes_, -gamma_, [&](std::size_t i) -> const Vec3& { return gradient_[nodes_[i]]; });
+  add_point_forces(
+      body_, nodes_, -gamma_, [&](std::size_t i) -> const Vec3& { return gradient_[nodes_[i]]; }, transfer_);
   area_ = comm_.sum(area);
 }
 
@@ -119,22 +136,25 @@ double SurfaceTension::stable_dt(const World&) const {
   if (gamma_ == 0.0) return std::numeric_limits<double>::infinity();
   update_points();
   const auto& faces = body_.cloud.boundary_faces;
-  std::vector<double> row(body_.size(), 0.0);
-  for (auto f : faces_) {
-    const auto& face = faces[f];
+  // Each node's row sum of the faces' stiffness, in x (the scatter's channel 1).
+  std::vector<Vec3> row(body_.size(), Vec3::Zero());
+  face_sums_.clear(0);
+  for (std::size_t r = 0; r < faces_.size(); ++r) {
+    const auto& face = faces[static_cast<std::size_t>(faces_[r])];
     double longest2 = 0.0;
     for (int p = 0; p < face.n_nodes; ++p)
       for (int q = p + 1; q < face.n_nodes; ++q)
         longest2 = std::max(longest2, (points_[face.nodes[p]] - points_[face.nodes[q]]).squaredNorm());
     const double area = face_area(face, points_, nullptr);
-    if (area <= 0.0) continue;  // a collapsed face: the blow-up check reports it
-    const double k = face.n_nodes * gamma_ * longest2 / area;
-    for (int p = 0; p < face.n_nodes; ++p) row[face.nodes[p]] += k;
+    // A collapsed face adds nothing (the blow-up check reports it).
+    const double k = area > 0.0 ? face.n_nodes * gamma_ * longest2 / area : 0.0;
+    const auto sink = face_sums_.sink(0, 1, static_cast<Index>(r));
+    for (int p = 0; p < face.n_nodes; ++p) sink(face.nodes[p], Vec3(k, 0.0, 0.0));
   }
-  if (face_ghosts_.built()) face_ghosts_.push_add(row.data(), 1);
+  add_term_rows(face_sums_, 1, 1.0, row);
   double omega2 = 0.0;
   for (Index i = body_.owned_begin(); i < body_.owned_end(); ++i)
-    if (row[i] > 0.0) omega2 = std::max(omega2, row[i] / body_.inertia[i]);
+    if (row[i].x() > 0.0) omega2 = std::max(omega2, row[i].x() / body_.inertia[i]);
   omega2 = comm_.max(omega2);
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
 }

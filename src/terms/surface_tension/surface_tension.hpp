@@ -74,6 +74,10 @@ class SurfaceTension final : public Term {
   par::GhostExchange face_ghosts_;   // distributed: the nodes of this rank's faces it does not own
   mutable std::vector<Vec3> points_; // physical positions, indexed by particle
   std::vector<Vec3> gradient_;       // dA/dp at the face nodes, indexed by particle
+  // The faces' sums at their nodes (channel 0: dA/dp; 1: the stiffness rows of the
+  // stable step), and the transfer to the particles, in the one-process order.
+  mutable rk::RowScatter face_sums_;
+  rk::RowScatter transfer_;
   double gamma_;
   double area_ = 0.0, initial_area_ = 0.0;
 };

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <stdexcept>
 
@@ -46,7 +47,14 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
-  if (body.distributed()) check_ghosts();
+  if (body.distributed()) {
+    check_ghosts();
+    first_row_ = static_cast<Index>(std::lower_bound(owner_.begin(), owner_.end(), body.owned_begin()) - owner_.begin());
+    end_row_ = static_cast<Index>(std::lower_bound(owner_.begin(), owner_.end(), body.owned_end()) - owner_.begin());
+    plan_term_rows(push_, body, first_row_, end_row_, 1, [this](Index r, int, const std::function<void(Index)>& emit) {
+      for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) emit(col_[k]);
+    });
+  }
   const double v = measure_signed_volume();
   sign_ = v < 0.0 ? -1.0 : 1.0;
   initial_ = volume_ = std::abs(v);
@@ -115,37 +123,36 @@ double VolumeConstraint::measure_signed_volume() {
     cofactor_[r] = cofactor(body_.F[owner_[r]]);
     cone_[r] = cofactor_[r].cwiseProduct(G).sum() / 3.0;
   }
-  double v = 0.0;
-  for (double c : cone_) v += c;  // in row order: deterministic
+  ExactSum v;  // exact: the same bits on any rank count
+  for (double c : cone_) v.add(c);
   return comm_.sum(v);
 }
 
 void VolumeConstraint::add_forces(World&) {
   volume_ = sign_ * measure_signed_volume();
   pressure_ = -bulk_ * std::log(volume_ / (target_ * initial_));
-  // f_I = p s sum_L cof(F_L) B_LI: a gather per particle over the transposed rows.
-  const auto& T = by_particle_;
+  // f_I = p s sum_L cof(F_L) B_LI, each particle's sum over its rows in increasing order.
   const double scale = pressure_ * sign_;
-  const auto n = static_cast<Index>(body_.size());
-  if (!body_.distributed()) {
-#pragma omp parallel for schedule(static)
-    for (Index I = 0; I < n; ++I) {
-      if (T.offset[I] == T.offset[I + 1]) continue;
-      Vec3 push = Vec3::Zero();
-      for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push.noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
-      body_.force[I] += scale * push;
+  if (body_.distributed()) {
+    // The owned rows scattered, ordered over the ranks (plan_term_rows).
+    push_.clear(0);
+    for (Index r = first_row_; r < end_row_; ++r) {
+      const auto sink = push_.sink(0, 0, r);
+      for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) sink(col_[k], Vec3(cofactor_[r] * B_[k]));
     }
+    add_term_rows(push_, 0, scale, body_.force);
     return;
   }
-  // Distributed: the owned rows' push on every particle they reach, ghosts included,
-  // then the ghosts' part returned to the owners.
-  ghost_push_.assign(body_.size(), Vec3::Zero());
+  // One process: a gather per particle over the transposed rows, in parallel.
+  const auto& T = by_particle_;
+  const auto n = static_cast<Index>(body_.size());
 #pragma omp parallel for schedule(static)
-  for (Index I = 0; I < n; ++I)
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t)
-      if (owns_row(static_cast<std::size_t>(T.row[t]))) ghost_push_[I].noalias() += cofactor_[T.row[t]] * B_[T.entry[t]];
-  body_.ghosts.push_add(ghost_push_);
-  for (Index I = body_.owned_begin(); I < body_.owned_end(); ++I) body_.force[I] += scale * ghost_push_[I];
+  for (Index I = 0; I < n; ++I) {
+    if (T.offset[I] == T.offset[I + 1]) continue;
+    Vec3 push = Vec3::Zero();
+    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push += Vec3(cofactor_[T.row[t]] * B_[T.entry[t]]);
+    body_.force[I] += scale * push;
+  }
 }
 
 double VolumeConstraint::stored_energy(const World&) const {

@@ -64,7 +64,10 @@ class VolumeConstraint final : public Term {
 
   Body& body_;
   const par::Comm& comm_;
-  std::vector<Vec3> ghost_push_;     // distributed: this rank's force on every particle, before the push
+  // Distributed: this rank's rows (its cells, a range: rows are in cell order) and their
+  // push on the particles, summed in the one-process order over the ranks.
+  Index first_row_ = 0, end_row_ = 0;
+  rk::RowScatter push_;
   // The facets on the surface, folded per owning cell L (one row each), so that a step
   // reads each (cell, particle) pair once instead of once per facet:
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
@@ -72,7 +75,7 @@ class VolumeConstraint final : public Term {
   std::vector<Vec3> B_;
   std::vector<Mat3> C_;
   std::vector<Mat3> cofactor_;       // J F^-T of each row's cell, at the last measure
-  std::vector<double> cone_;         // each row's share of the volume (summed in row order)
+  std::vector<double> cone_;         // each row's share of the volume (summed exactly)
   rk::CsrTranspose by_particle_;     // particle I -> (entry, row) pairs of B
   double bulk_, target_;
   double sign_ = 1.0, initial_ = 0.0, volume_ = 0.0, pressure_ = 0.0;

@@ -103,7 +103,7 @@ void WallContact::add_forces(World& world) {
   }
   // Generalized forces sum_J Psi_I(X_J) f_J: only particles in contact carry a force,
   // so a serial scatter over them is cheap and keeps a fixed order.
-  add_point_forces(body_, particles_, 1.0, [&](std::size_t i) -> const Vec3& { return force_[i]; });
+  add_point_forces(body_, particles_, 1.0, [&](std::size_t i) -> const Vec3& { return force_[i]; }, transfer_);
   double energy = 0.0, closest2 = kInfinity;  // serial, in particle order
   for (Index i = 0; i < n; ++i) {
     energy += row_energy_[i];

@@ -69,6 +69,7 @@ class WallContact final : public Term {
   std::vector<Vec3> reference_, points_, force_;
   std::vector<double> row_energy_, row_closest_;
   ContactPairs pairs_;
+  rk::RowScatter transfer_;  // the point forces to the particles, in the one-process order
   double energy_ = 0.0;
   double closest_ = std::numeric_limits<double>::infinity();
   double closest_over_run_ = std::numeric_limits<double>::infinity();
