@@ -29,12 +29,12 @@ std::vector<std::int32_t> morton_order(const std::vector<Vec3>& X) {
     hi = hi.cwiseMax(x);
   }
   const double steps = static_cast<double>((1u << 21) - 1);
-  const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+  const double extent = std::max((hi - lo).maxCoeff(), 1e-300);  // cubic steps (renumber.hpp)
   std::vector<std::pair<std::uint64_t, std::int32_t>> keyed(X.size());
   for (std::size_t i = 0; i < X.size(); ++i) {
     std::uint64_t key = 0;
     for (int d = 0; d < 3; ++d) {
-      const double t = std::clamp((X[i][d] - lo[d]) / extent[d], 0.0, 1.0);
+      const double t = std::clamp((X[i][d] - lo[d]) / extent, 0.0, 1.0);
       key |= spread_bits(static_cast<std::uint64_t>(std::floor(t * steps))) << d;
     }
     keyed[i] = {key, static_cast<std::int32_t>(i)};

@@ -90,20 +90,27 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, flux);
       const double w = op.weight[L];
-      const auto f = scatter.sink(t, 0, L);
-      rk::scatter_row(op, grad, L, w, P, f);
-      if (frank) {
-        dir->frank_flux[L] = flux;
-        rk::scatter_row(op, grad, L, w, flux, scatter.sink(t, 1, L));
-      }
+      if (frank) dir->frank_flux[L] = flux;
+      Vec3 wr = Vec3::Zero();
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
         stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
-        const Vec3 wr = stab.weight[L] * r;
+        wr = stab.weight[L] * r;
         stab.residual[L] = wr;
-        f(L, wr);
-        for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) f(N.col[k], Vec3(-(N.psi[k] * wr)));
       }
+      // The row's contributions, in the order the scatter's plan lists them.
+      const auto contribute = [&](const auto& add_force, const auto& add_divergence) {
+        rk::scatter_row(op, grad, L, w, P, add_force);
+        if (frank) rk::scatter_row(op, grad, L, w, flux, add_divergence);
+        if (stabilized) {
+          add_force(L, wr);
+          for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) add_force(N.col[k], Vec3(-(N.psi[k] * wr)));
+        }
+      };
+      if (scatter.seam_row(L))
+        contribute(scatter.sink(t, 0, L), scatter.sink(t, frank ? 1 : 0, L));
+      else
+        contribute(rk::RowScatter::AddTo{scatter.buffer(t, 0)}, rk::RowScatter::AddTo{scatter.buffer(t, frank ? 1 : 0)});
     }
     energy[static_cast<std::size_t>(t)] = stabilization_energy;
 #pragma omp barrier

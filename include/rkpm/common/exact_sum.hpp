@@ -12,8 +12,9 @@
 // exact result once. The same terms in any order, split over any number of threads or
 // ranks, give the same bits.
 //
-// Cost: a few integer operations per term (about 3 ns), against one floating-point
-// addition; the sums that use it run once per step over the particles.
+// Cost: a few integer operations per term, without a branch on its sign (about 2 ns
+// here, against 0.8 for a floating-point addition); the sums that use it run a few
+// times per step over the particles.
 #pragma once
 
 #include <algorithm>
@@ -49,18 +50,13 @@ class ExactSum {
     const int position = biased == 0 ? 0 : biased - 1;
     const auto shifted = static_cast<unsigned __int128>(mantissa) << (position & 31);
     const auto digit = static_cast<std::size_t>(position >> 5);
-    const auto d0 = static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted));
-    const auto d1 = static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted >> 32));
-    const auto d2 = static_cast<std::int64_t>(shifted >> 64);  // < 2^21
-    if (negative) {
-      words_[digit] -= d0;
-      words_[digit + 1] -= d1;
-      words_[digit + 2] -= d2;
-    } else {
-      words_[digit] += d0;
-      words_[digit + 1] += d1;
-      words_[digit + 2] += d2;
-    }
+    // The sign applied without a branch (terms of either sign are equally likely):
+    // (d ^ -1) + 1 = -d.
+    const std::int64_t flip = negative ? -1 : 0;
+    const auto signed_digit = [flip](std::int64_t d) { return (d ^ flip) - flip; };
+    words_[digit] += signed_digit(static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted)));
+    words_[digit + 1] += signed_digit(static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted >> 32)));
+    words_[digit + 2] += signed_digit(static_cast<std::int64_t>(shifted >> 64));  // < 2^21
     if (++pending_ == kCarryEvery) propagate_carries();
   }
 

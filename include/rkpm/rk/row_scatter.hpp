@@ -109,6 +109,15 @@ class RowScatter {
     Vec3* records_ = nullptr;
   };
   Sink sink(int t, int channel, Index row);
+  // True when row L reaches a seam: its contributions must go through `sink`. The others
+  // may add straight into buffer(t, channel), as `AddTo` does.
+  bool seam_row(Index row) const {
+    return !seam_row_.empty() && seam_row_[static_cast<std::size_t>(row - first_row_)] != 0;
+  }
+  struct AddTo {
+    Vec3* out;
+    void operator()(Index I, const Vec3& c) const { out[I] += c; }
+  };
 
   // out[I] = scale * sum over threads of buffer(t, channel)[I], for I in the static
   // block of columns of the calling thread (call inside the same parallel region,

@@ -48,11 +48,12 @@ ParamTable rk_section() {
                 "shaped by the particle's mesh edges (support x the spacing in each direction), so a "
                 "thin wall's supports reach as many spacings across it as along it and the operators "
                 "stay short when the wall is refined in its plane. On a regular lattice both are the same."),
-      ParamSpec::choice("particle_order", {"input", "morton"}).defaults(std::string("input"))
-          .help("input: particles numbered as the generator or file gives them (a shell: layer by layer). "
-                "morton: renumbered along a Morton space-filling curve, so that particles near in space are "
-                "near in memory and every operator row reads a compact range (faster set-up and steps on "
-                "large clouds). Output frames list the particles in this order."),
+      ParamSpec::choice("particle_order", {"input", "morton"}).defaults(std::string("morton"))
+          .help("morton: renumbered along a Morton space-filling curve, so that particles near in space are "
+                "near in memory and every operator row reads a compact range (faster steps), and a "
+                "distributed run gives each rank a compact piece of the body (its range of this order). "
+                "input: particles numbered as the generator or file gives them (a shell: layer by layer); "
+                "ranks then own slabs of that order. Output frames list the particles in this order."),
       ParamSpec::choice("gradient_precision", {"double", "float"}).defaults(std::string("float"))
           .help("Storage of the smoothed gradients b_I(X_L), the largest operator: float (16 bytes per "
                 "entry; every sum stays in double and F is formed from relative displacements, so a body "

@@ -15,8 +15,11 @@
 namespace rkpm::particles {
 
 // order[k] = the current id of the particle that becomes particle k: the particles
-// sorted by the Morton key of their position quantised to 2^21 steps per axis of the
-// bounding box (ties, which only coincident positions give, by id). Deterministic.
+// sorted by the Morton key of their position quantised to 2^21 steps of the bounding
+// box's longest side on every axis (ties, which only coincident positions give, by id).
+// Deterministic. The steps are cubes, not a stretch of the box: the curve's first
+// halving then cuts the longest side, so the ranges a distributed run gives each rank
+// (par/partition.hpp) and each thread are compact pieces, not slabs along a long side.
 std::vector<std::int32_t> morton_order(const std::vector<Vec3>& X);
 
 // Renumbers the cloud: particle k becomes the old particle order[k]. Positions and
