@@ -157,7 +157,7 @@ TEST(DistributedRun, SagRelaxationLandsOnTheOneRankState) {
   EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
   std::cout << "relaxed sag, " << world().size() << " ranks against 1: final positions differ by " << error
             << " of the largest displacement; steps " << summary_value(dir / "two", "steps") << "\n";
-  EXPECT_LT(error, 1e-10);
+  EXPECT_EQ(error, 0.0);  // the same bits: docs/distributed.md, "Design"
   EXPECT_TRUE(fs::exists(dir / "two" / "frames_000000_1.vtu"));
   EXPECT_TRUE(fs::exists(dir / "two" / "history.csv"));
 }
@@ -168,7 +168,7 @@ TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
   const double error = run_both_ways(text, dir, 200);
   if (!world().root()) return;
   std::cout << "dynamic sag, 200 steps, " << world().size() << " ranks against 1: " << error << " of the largest displacement\n";
-  EXPECT_LT(error, 1e-9);
+  EXPECT_EQ(error, 0.0);
 }
 
 // The red-blood-cell example on a coarse cloud: the active LCE shell (director evolution
@@ -187,12 +187,12 @@ TEST(DistributedRun, RedBloodCellSceneOnACoarseCloudFollowsTheOneRankPath) {
   if (!world().root()) return;
   std::cout << "coarse RBC scene, nested level and 300 FIRE steps, " << world().size() << " ranks against 1: " << error
             << " of the largest displacement; wall-contact pairs " << summary_value(dir / "two", "active_pairs") << "\n";
-  EXPECT_LT(error, 1e-10);
+  EXPECT_EQ(error, 0.0);
   EXPECT_GT(std::stoi(summary_value(dir / "one", "active_pairs")), 0);
   EXPECT_EQ(summary_value(dir / "one", "active_pairs"), summary_value(dir / "two", "active_pairs"));
-  // Summed over the ranks' cells, gathered from the ranks' particles: the same to round-off.
+  // Summed exactly over the ranks' cells, gathered from the ranks' particles: the same bits.
   for (const std::string key : {"volume_ratio", "h_min_over_h_max"})
-    EXPECT_NEAR(std::stod(summary_value(dir / "two", key)), std::stod(summary_value(dir / "one", key)), 1e-10) << key;
+    EXPECT_EQ(std::stod(summary_value(dir / "two", key)), std::stod(summary_value(dir / "one", key))) << key;
   EXPECT_TRUE(fs::exists(dir / "two" / "shape_profile.csv"));
   // `rkpm shape` reads the distributed run's last frame (a .pvtu of the ranks' pieces)
   // in the one-rank numbering: the report the run made from memory.
@@ -221,7 +221,7 @@ TEST(DistributedRun, AdhesionSceneOnACoarseCloudFollowsTheOneRankPath) {
   std::cout << "coarse adhesion scene, 200 dynamic steps, " << world().size() << " ranks against 1: " << error
             << " of the largest displacement; contact pairs " << summary_value(dir / "two", "active_pairs")
             << ", pair-list builds " << summary_value(dir / "two", "pair_list_builds") << "\n";
-  EXPECT_LT(error, 1e-9);
+  EXPECT_EQ(error, 0.0);
   // `rkpm compare` finds the same difference, reading the frames its own way.
   std::ostringstream out, log;
   ASSERT_EQ(run_compare_command({dir / "one", dir / "two"}, out, log), kSuccess) << log.str();
@@ -230,10 +230,8 @@ TEST(DistributedRun, AdhesionSceneOnACoarseCloudFollowsTheOneRankPath) {
   EXPECT_GT(std::stoi(summary_value(dir / "one", "pair_list_builds")), 3);
   for (const std::string key : {"active_pairs", "listed_pairs", "pair_list_builds", "contact_particles"})
     EXPECT_EQ(summary_value(dir / "one", key), summary_value(dir / "two", key)) << key;
-  for (const std::string key : {"min_gap", "contact_radius"}) {
-    const double one = std::stod(summary_value(dir / "one", key));
-    EXPECT_NEAR(std::stod(summary_value(dir / "two", key)), one, 1e-9 * std::abs(one)) << key;
-  }
+  for (const std::string key : {"min_gap", "contact_radius"})
+    EXPECT_EQ(std::stod(summary_value(dir / "two", key)), std::stod(summary_value(dir / "one", key))) << key;
   // The history's contact columns, written once by rank 0 from every rank's particles.
   const std::string history = read_text(dir / "two" / "history.csv");
   const std::string serial_history = read_text(dir / "one" / "history.csv");
@@ -288,11 +286,10 @@ TEST(DistributedRun, MassScalingAndTheMeasuredStableStepFollowTheOneRankPath) {
   std::cout << "sag relaxation with mass scaling and the measured stable step, " << world().size()
             << " ranks against 1: " << error << " of the largest displacement; steps " << summary_value(dir / "two", "steps")
             << "\n";
-  EXPECT_LT(error, 1e-10);
+  EXPECT_EQ(error, 0.0);
   EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
   EXPECT_NE(summary_value(dir / "two", "converged").find("true"), std::string::npos);
-  const double dt_one = std::stod(summary_value(dir / "one", "stable_dt"));
-  EXPECT_NEAR(std::stod(summary_value(dir / "two", "stable_dt")), dt_one, 1e-9 * dt_one);
+  EXPECT_EQ(std::stod(summary_value(dir / "two", "stable_dt")), std::stod(summary_value(dir / "one", "stable_dt")));
 }
 
 TEST(DistributedRun, ABlowUpStopsEveryRankWithTheSameDiagnosis) {

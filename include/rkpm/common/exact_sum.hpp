@@ -48,15 +48,18 @@ class ExactSum {
     const std::uint64_t mantissa = biased == 0 ? fraction : fraction | (std::uint64_t{1} << 52);
     if (mantissa == 0) return;
     const int position = biased == 0 ? 0 : biased - 1;
-    const auto shifted = static_cast<unsigned __int128>(mantissa) << (position & 31);
+    // mantissa << shift spans 85 bits: its low 64 and the bits shifted out above.
+    const int shift = position & 31;
+    const std::uint64_t low = mantissa << shift;
+    const std::uint64_t high = shift == 0 ? 0 : mantissa >> (64 - shift);  // < 2^21
     const auto digit = static_cast<std::size_t>(position >> 5);
     // The sign applied without a branch (terms of either sign are equally likely):
     // (d ^ -1) + 1 = -d.
     const std::int64_t flip = negative ? -1 : 0;
     const auto signed_digit = [flip](std::int64_t d) { return (d ^ flip) - flip; };
-    words_[digit] += signed_digit(static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted)));
-    words_[digit + 1] += signed_digit(static_cast<std::int64_t>(static_cast<std::uint32_t>(shifted >> 32)));
-    words_[digit + 2] += signed_digit(static_cast<std::int64_t>(shifted >> 64));  // < 2^21
+    words_[digit] += signed_digit(static_cast<std::int64_t>(low & 0xffffffffu));
+    words_[digit + 1] += signed_digit(static_cast<std::int64_t>(low >> 32));
+    words_[digit + 2] += signed_digit(static_cast<std::int64_t>(high));
     if (++pending_ == kCarryEvery) propagate_carries();
   }
 

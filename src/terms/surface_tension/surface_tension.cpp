@@ -65,11 +65,12 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
     throw std::invalid_argument("surface_tension: surface '" + surface + "' of body '" + body.name + "' has no faces");
   // Faces in order of their lowest node (then as listed): each rank's faces, those whose
   // lowest node it owns, are then one range of the one-process order.
-  const auto lowest = [&](std::int32_t f) {
+  const auto lowest_node = [&](std::int32_t f) {
     const auto& face = cloud.boundary_faces[static_cast<std::size_t>(f)];
     return *std::min_element(face.nodes, face.nodes + face.n_nodes);
   };
-  std::stable_sort(faces_.begin(), faces_.end(), [&](std::int32_t a, std::int32_t b) { return lowest(a) < lowest(b); });
+  std::stable_sort(faces_.begin(), faces_.end(),
+                   [&](std::int32_t a, std::int32_t b) { return lowest_node(a) < lowest_node(b); });
   for (auto f : faces_)
     for (int k = 0; k < cloud.boundary_faces[f].n_nodes; ++k) nodes_.push_back(cloud.boundary_faces[f].nodes[k]);
   std::sort(nodes_.begin(), nodes_.end());
@@ -80,7 +81,7 @@ SurfaceTension::SurfaceTension(Body& body, const std::string& surface, double ga
     std::vector<std::int32_t> mine;
     for (auto f : faces_) {
       const auto& face = cloud.boundary_faces[f];
-      const Index lowest = *std::min_element(face.nodes, face.nodes + face.n_nodes);
+      const Index lowest = lowest_node(f);
       if (lowest < body.owned_begin() || lowest >= body.owned_end()) continue;
       mine.push_back(f);
       ghosts.insert(ghosts.end(), face.nodes, face.nodes + face.n_nodes);
