@@ -108,12 +108,14 @@ measure() {
   step=$(printf '%s\n' "${steps[@]}" | median)
   setup=$(printf '%s\n' "${setups[@]}" | median)
   particles=$(( (nx + 1) * (cells + 1) * (cells + 1) ))
-  ghosts=0
+  ghosts=0 doubles=0
   if [ "$ranks" -gt 1 ]; then
-    ghosts=$(tr -d ' \n' <"$dir/summary.json" | sed -n 's/.*"ghosts":\[\([0-9,]*\)\].*/\1/p' | tr ',' '\n' | sort -n | tail -1)
+    largest() { tr -d ' \n' <"$dir/summary.json" | sed -n "s/.*\"$1\":\\[\\([0-9,]*\\)\\].*/\\1/p" | tr ',' '\n' | sort -n | tail -1; }
+    ghosts=$(largest ghosts)
+    doubles=$(largest doubles_received_and_returned_per_force_evaluation)
   fi
-  awk -v c="$name" -v r="$ranks" -v t="$threads" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" 'BEGIN {
-    printf "%s,%d,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, t, n, n / r, st, su, g, g / (n / r), 6 * g }' >>"$csv"
+  awk -v c="$name" -v r="$ranks" -v t="$threads" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" -v d="$doubles" 'BEGIN {
+    printf "%s,%d,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, t, n, n / r, st, su, g, g / (n / r), d }' >>"$csv"
   echo "distributed-study: $name on $ranks rank(s) x $threads thread(s), $particles particles: $step s per step, set-up $setup s"
 }
 
@@ -149,14 +151,16 @@ END {
   printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. What the weak case loses is not the exchange: two ranks share the L3 cache and the memory bandwidth that one rank has to itself, and the efficiency at the two sizes shows how much of that is the cache (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
-  # neighbour: displacements in, forces out) plus the collective reductions.
+  # neighbour: displacements in, force records out, as many doubles per ghost as
+  # measured) plus the collective reductions.
   # Inputs from the largest weak size measured (the last pair of rows): a rank of 1e6
   # particles is far out of cache, as that one is.
   w1 = (last >= 8) ? last - 1 : 2; w2 = w1 + 1
   tc = st[w1] / n[w1]; weak = st[w1] / st[w2]
   g0 = gf[w2]; m0 = npr[w2]; m = 1e6; P = 64
   gm = g0 * (m0 / m) ^ (1.0 / 3.0)           # ghost fraction ~ surface / volume of a part
-  bytes = 2 * 3 * 8 * gm * m                 # per step, in and out
+  per_ghost = (g[w2] > 0) ? d[w2] / g[w2] : 6  # doubles per ghost, in and out, measured
+  bytes = 8 * per_ghost * gm * m             # per step
   alpha = 2e-6; beta = 1.0 / 10e9; nb = 12; reductions = 12
   comm = 2 * nb * alpha + bytes * beta + reductions * alpha * log(P) / log(2)
   compute = tc * m

@@ -264,6 +264,14 @@ void RowScatter::fold(int channel, double scale, std::vector<Vec3>& out, bool ad
   }
 }
 
+std::size_t RowScatter::records_sent() const {
+  std::size_t n = 0;
+  for (const auto& ch : ordered_)
+    for (const auto& counts : ch.send_count)
+      for (Index c : counts) n += static_cast<std::size_t>(c);
+  return n;
+}
+
 std::size_t RowScatter::record_count() const {
   std::size_t n = 0;
   for (const auto& ch : ordered_) n += ch.records.size();

@@ -67,7 +67,8 @@ std::filesystem::path rank_file(const std::filesystem::path& path, const par::Co
 }
 
 // Per body and rank: the particles owned, the ghosts held, and the doubles a force
-// evaluation exchanges (each ghost's displacement in, its force contribution out).
+// evaluation exchanges (each ghost's displacement in, and out the force contributions
+// the rank's rows make to its ghosts, one record each: rk/row_scatter.hpp).
 // Collective: every rank calls it.
 io::Json distribution_json(const World& world) {
   const par::Comm& comm = *world.comm;
@@ -75,13 +76,14 @@ io::Json distribution_json(const World& world) {
   for (const auto& b : world.bodies) {
     const auto owned = comm.gather(static_cast<std::int64_t>(b->owned_end() - b->owned_begin()));
     const auto ghosts = comm.gather(static_cast<std::int64_t>(b->ghosts.ghost_count()));
+    const auto records = comm.gather(static_cast<std::int64_t>(b->force_scatter.records_sent()));
     io::Json j = io::Json::object();
     j.set("body", b->name);
     io::Json o = io::Json::array(), g = io::Json::array(), v = io::Json::array();
     for (std::size_t r = 0; r < owned.size(); ++r) {
       o.push_back(owned[r]);
       g.push_back(ghosts[r]);
-      v.push_back(6 * ghosts[r]);
+      v.push_back(3 * ghosts[r] + 3 * records[r]);
     }
     j.set("owned", std::move(o));
     j.set("ghosts", std::move(g));

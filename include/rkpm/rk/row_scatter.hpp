@@ -135,6 +135,8 @@ class RowScatter {
   // Columns whose contributions are recorded, and records per pass (all channels).
   std::size_t seam_count() const { return seams_.size(); }
   std::size_t record_count() const;
+  // Records this rank sends to the others per pass (all channels).
+  std::size_t records_sent() const;
 
  private:
   Vec3 thread_sum(int channel, Index I) const;
