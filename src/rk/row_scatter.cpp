@@ -29,6 +29,7 @@ void RowScatter::plan(Index first_row, Index end_row, Index n_columns, const std
   owned_.clear();
   seam_row_.clear();
   ordered_.clear();
+  first_.clear();
   linked_ = false;
   row_begin_.assign(static_cast<std::size_t>(threads_) + 1, 0);
   col_lo_.assign(static_cast<std::size_t>(threads_), n_columns);
@@ -75,7 +76,7 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
   // rank (its ghosts, and its own particles that other ranks hold).
   slot_.assign(n, -1);
   constexpr Index kUntouched = -1, kSeveral = -2;
-  std::vector<Index> reached_by(n, kUntouched);
+  std::vector<Index> reached_by(n, kUntouched), first_reach(n, kUntouched);
   for (int t = 0; t < threads_; ++t) {
     auto [begin, end] = static_block(end_row - first_row, t, threads_);
     begin += first_row;
@@ -90,16 +91,22 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
           hi = std::max(hi, I + 1);
           auto& by = reached_by[static_cast<std::size_t>(I)];
           by = by == kUntouched || by == t ? t : kSeveral;
+          auto& first = first_reach[static_cast<std::size_t>(I)];
+          if (first == kUntouched) first = t;
         });
     col_lo_[static_cast<std::size_t>(t)] = std::min(lo, hi);
     col_hi_[static_cast<std::size_t>(t)] = hi;
   }
   for (std::size_t I = 0; I < n; ++I)
     if (reached_by[I] == kSeveral) slot_[I] = 0;
+  std::vector<char> rank_shared(linked_ ? n : 0, 0);
   if (linked_) {
     for (const auto* groups : {links_.ghosts, links_.holders})
       for (const auto& group : *groups)
-        for (Index I : group) slot_[static_cast<std::size_t>(I)] = 0;
+        for (Index I : group) {
+          slot_[static_cast<std::size_t>(I)] = 0;
+          rank_shared[static_cast<std::size_t>(I)] = 1;
+        }
     for (std::size_t I = 0; I < n; ++I) {
       const auto i = static_cast<Index>(I);
       if (reached_by[I] != kUntouched && slot_[I] < 0 && (i < links_.owned_begin || i >= links_.owned_end))
@@ -109,12 +116,14 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
   }
   seams_.clear();
   owned_.clear();
+  first_.clear();
   for (std::size_t I = 0; I < n; ++I)
     if (slot_[I] >= 0) {
       slot_[I] = static_cast<Index>(seams_.size());
       seams_.push_back(static_cast<Index>(I));
       const auto i = static_cast<Index>(I);
       owned_.push_back(!linked_ || (i >= links_.owned_begin && i < links_.owned_end) ? 1 : 0);
+      first_.push_back(linked_ && rank_shared[I] != 0 ? -1 : static_cast<int>(first_reach[I]));
     }
   const std::size_t ns = seams_.size();
 
@@ -127,7 +136,7 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
       for (int c = 0; c < channels_; ++c)
         columns(r, c, [&](Index I) {
           const Index s = slot_[static_cast<std::size_t>(I)];
-          if (s < 0) return;
+          if (s < 0 || first_[static_cast<std::size_t>(s)] == t) return;
           seam_row_[static_cast<std::size_t>(r - first_row)] = 1;
           ++ordered_[static_cast<std::size_t>(c)].start[static_cast<std::size_t>(t)][static_cast<std::size_t>(s)];
         });
@@ -213,6 +222,8 @@ RowScatter::Sink RowScatter::sink(int t, int channel, Index row) {
   if (!seam_row_.empty() && seam_row_[static_cast<std::size_t>(row - first_row_)] != 0) {
     Channel& ch = ordered_[static_cast<std::size_t>(channel)];
     s.slot_ = slot_.data();
+    s.first_ = first_.data();
+    s.thread_ = t;
     s.cursor_ = ch.cursor[static_cast<std::size_t>(t)].data();
     s.records_ = ch.records.data();
   }
@@ -257,9 +268,13 @@ void RowScatter::fold(int channel, double scale, std::vector<Vec3>& out, bool ad
 #pragma omp parallel for schedule(static)
   for (Index s = 0; s < ns; ++s) {
     if (owned_[static_cast<std::size_t>(s)] == 0) continue;
-    Vec3 sum = Vec3::Zero();
+    const auto I = static_cast<std::size_t>(seams_[static_cast<std::size_t>(s)]);
+    // The first thread's contributions, added in its buffer in row order, then the
+    // later threads' records in order.
+    const int first = first_[static_cast<std::size_t>(s)];
+    Vec3 sum = first >= 0 ? buffers_[static_cast<std::size_t>(first * channels_ + channel)][I] : Vec3::Zero();
     for (Index k = ch.segment[s]; k < ch.segment[s + 1]; ++k) sum += ch.records[static_cast<std::size_t>(k)];
-    auto& o = out[static_cast<std::size_t>(seams_[static_cast<std::size_t>(s)])];
+    auto& o = out[I];
     o = add ? Vec3(o + scale * sum) : Vec3(scale * sum);
   }
 }
@@ -313,7 +328,7 @@ void RowScatter::reduce_add(int t, int channel, double scale, std::vector<Vec3>&
 std::size_t RowScatter::bytes() const {
   std::size_t b = (row_begin_.size() + col_lo_.size() + col_hi_.size() + slot_.size() + seams_.size()) * sizeof(Index);
   for (const auto& v : buffers_) b += v.size() * sizeof(Vec3);
-  b += seam_row_.size() + owned_.size();
+  b += seam_row_.size() + owned_.size() + first_.size() * sizeof(int);
   for (const auto& ch : ordered_) {
     b += ch.records.size() * sizeof(Vec3) + ch.segment.size() * sizeof(Index);
     for (const auto* table : {&ch.start, &ch.cursor, &ch.send_at, &ch.send_count, &ch.recv_at, &ch.recv_count})

@@ -17,12 +17,14 @@
 // contributions in the order the row makes them. That is the reference order. A
 // column whose contributions all come from one thread's block gets them in that order
 // in the thread's buffer. A column that several blocks reach (a seam: rows of two
-// threads, or of two ranks) would get partial sums added in another grouping, so its
-// contributions are recorded one by one instead, each block's in its own segment, and
-// folded afterwards in block order, which is row order: the same additions in the same
-// order as one thread makes them. Between ranks, the records of a ghost column are sent
-// to its owner (`Links`), which folds them in rank order with its own: ranks own
-// contiguous, increasing ranges of rows (par/partition.hpp). Seams are a thin layer at
+// threads, or of two ranks) would get partial sums added in another grouping, so the
+// first thread to reach it adds its contributions in its buffer as usual, and the later
+// threads record theirs one by one, each in its own segment; the fold then starts from
+// the first thread's sum and adds the records in block order, which is row order: the
+// same additions in the same order as one thread makes them. At a column shared with
+// another rank every thread records; the records of a ghost column are sent to its
+// owner (`Links`), which folds them in rank order with its own: ranks own contiguous,
+// increasing ranges of rows (par/partition.hpp). Seams are a thin layer at
 // the block boundaries, so the recording costs little. The plan is checked at every
 // fold: a row that made other contributions than it declared is an internal error.
 #pragma once
@@ -91,7 +93,7 @@ class RowScatter {
     void operator()(Index I, const Vec3& c) const {
       if (slot_ != nullptr) {
         const Index s = slot_[I];
-        if (s >= 0) {
+        if (s >= 0 && first_[s] != thread_) {
           records_[cursor_[s]++] = c;
           return;
         }
@@ -105,6 +107,8 @@ class RowScatter {
     friend class RowScatter;
     Vec3* out_ = nullptr;
     const Index* slot_ = nullptr;  // null for a row that reaches no seam
+    const int* first_ = nullptr;
+    int thread_ = 0;
     Index* cursor_ = nullptr;
     Vec3* records_ = nullptr;
   };
@@ -156,6 +160,10 @@ class RowScatter {
   std::vector<Index> slot_;                   // per column: its seam index, or -1
   std::vector<Index> seams_;                  // per seam: its column
   std::vector<char> owned_;                   // per seam: 1 when this rank owns the column
+  // Per seam that only this rank's threads reach: the first thread that reaches it,
+  // which adds its contributions in its buffer (their sum is the fold's start); -1 for
+  // a seam shared with other ranks, where every thread records.
+  std::vector<int> first_;
   std::vector<std::uint8_t> seam_row_;        // per row from first_row_: 1 when it reaches a seam
   struct Channel {
     std::vector<Index> segment;               // seams + 1: each seam's records [segment[s], segment[s+1])
