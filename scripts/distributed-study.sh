@@ -148,7 +148,7 @@ END {
   for (i = 7; i + 1 <= last; i += 2)
     others = others sprintf("; at %d particles per rank **%.1f %%**", npr[i], 100 * st[i] / st[i + 1])
   printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.1f %%** at %d particles per rank%s.", 100 * weak, npr[2], others
-  printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. What the weak case loses is not the exchange: two ranks share the L3 cache and the memory bandwidth that one rank has to itself, and the efficiency at the two sizes shows how much of that is the cache (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
+  printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. Where the weak case loses its time is discussed above the table (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
   # neighbour: displacements in, force records out, as many doubles per ghost as

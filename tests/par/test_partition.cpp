@@ -1,6 +1,8 @@
-// The partition of a cloud over ranks (par/partition.hpp): a permutation with one
-// contiguous, balanced range per part, deterministic, and a cut of the mesh-edge graph
-// close to the best plane's on a structured block.
+// The partition of a cloud over ranks (par/partition.hpp), both methods: a permutation
+// with one contiguous, balanced range per part, deterministic, and a cut of the
+// mesh-edge graph close to the best plane's on a structured block. The curve partition
+// keeps the numbering (the identity permutation) and cuts a Morton-ordered 2:1 block
+// across its long side.
 #include "rkpm/par/partition.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/particles/renumber.hpp"
@@ -32,8 +34,9 @@ TEST(Partition, OnePartIsTheIdentity) {
 TEST(Partition, PartsAreBalancedContiguousRangesOfAPermutationWithAFewCutEdges) {
   const auto cloud = block(19, 19, 19);  // 20^3 particles, 3 x 20 x 20 x 19 hex edges
   const auto n = static_cast<Index>(cloud.size());
+  for (const auto method : {par::PartitionMethod::kCurve, par::PartitionMethod::kMetis})
   for (int parts : {2, 4}) {
-    const auto p = par::partition_cloud(cloud, parts);
+    const auto p = par::partition_cloud(cloud, parts, method);
     std::vector<std::int32_t> sorted = p.order;
     std::sort(sorted.begin(), sorted.end());
     for (Index i = 0; i < n; ++i) ASSERT_EQ(sorted[static_cast<std::size_t>(i)], i);
@@ -55,10 +58,21 @@ TEST(Partition, PartsAreBalancedContiguousRangesOfAPermutationWithAFewCutEdges) 
     EXPECT_LE(cut, 2 * planes);
     EXPECT_GE(cut, planes / 2);
     // Deterministic.
-    const auto again = par::partition_cloud(cloud, parts);
+    const auto again = par::partition_cloud(cloud, parts, method);
     EXPECT_EQ(again.order, p.order);
     EXPECT_EQ(again.offset, p.offset);
   }
+}
+
+TEST(Partition, TheCurveKeepsTheNumberingAndCutsAMortonBlockAcrossItsLongSide) {
+  auto cloud = block(39, 19, 19);  // 40 x 20 x 20 particles
+  particles::renumber(cloud, particles::morton_order(cloud.X));
+  const auto p = par::partition_cloud(cloud, 2);
+  for (std::size_t i = 0; i < p.order.size(); ++i) ASSERT_EQ(p.order[i], static_cast<std::int32_t>(i));
+  // One plane of 20 x 20 particles across x: 400 cut edges; a slab cut along x would
+  // cut 800.
+  EXPECT_EQ(par::cut_edges(cloud, p.offset), 400);
+  for (Index i = 0; i < p.offset[1]; ++i) EXPECT_LT(cloud.X[static_cast<std::size_t>(i)].x(), 20e-6) << i;
 }
 
 TEST(Partition, MorePartsThanParticlesIsAClearError) {
