@@ -18,6 +18,16 @@ std::pair<Index, Index> static_block(Index n, int t, int threads) {
 }
 }  // namespace
 
+// Thread t's rows: block t of OpenMP's static schedule over [first_row, end_row).
+void RowScatter::split_rows(Index first_row, Index end_row) {
+  row_begin_.assign(static_cast<std::size_t>(threads_) + 1, first_row);
+  for (int t = 0; t < threads_; ++t) {
+    const auto [begin, end] = static_block(end_row - first_row, t, threads_);
+    row_begin_[static_cast<std::size_t>(t)] = first_row + begin;
+    row_begin_[static_cast<std::size_t>(t) + 1] = first_row + end;
+  }
+}
+
 void RowScatter::plan(Index first_row, Index end_row, Index n_columns, const std::vector<Pattern>& patterns,
                       int threads, int channels) {
   threads_ = std::max(threads, 1);
@@ -31,17 +41,12 @@ void RowScatter::plan(Index first_row, Index end_row, Index n_columns, const std
   ordered_.clear();
   first_.clear();
   linked_ = false;
-  row_begin_.assign(static_cast<std::size_t>(threads_) + 1, 0);
+  split_rows(first_row, end_row);
   col_lo_.assign(static_cast<std::size_t>(threads_), n_columns);
   col_hi_.assign(static_cast<std::size_t>(threads_), 0);
   for (int t = 0; t < threads_; ++t) {
-    auto [begin, end] = static_block(end_row - first_row, t, threads_);
-    begin += first_row;
-    end += first_row;
-    row_begin_[static_cast<std::size_t>(t)] = begin;
-    row_begin_[static_cast<std::size_t>(t) + 1] = end;
     Index lo = n_columns, hi = 0;
-    for (Index r = begin; r < end; ++r) {
+    for (Index r = row_begin(t); r < row_end(t); ++r) {
       if (r < n_columns) {  // the row's own particle (stabilization: row L acts on d_L)
         lo = std::min(lo, r);
         hi = std::max(hi, r + 1);
@@ -68,7 +73,7 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
   links_ = linked_ ? *links : Links{};
   const auto nt = static_cast<std::size_t>(threads_);
   const auto n = static_cast<std::size_t>(n_columns);
-  row_begin_.assign(nt + 1, 0);
+  split_rows(first_row, end_row);
   col_lo_.assign(nt, n_columns);
   col_hi_.assign(nt, 0);
 
@@ -78,13 +83,8 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
   constexpr Index kUntouched = -1, kSeveral = -2;
   std::vector<Index> reached_by(n, kUntouched), first_reach(n, kUntouched);
   for (int t = 0; t < threads_; ++t) {
-    auto [begin, end] = static_block(end_row - first_row, t, threads_);
-    begin += first_row;
-    end += first_row;
-    row_begin_[static_cast<std::size_t>(t)] = begin;
-    row_begin_[static_cast<std::size_t>(t) + 1] = end;
     Index lo = n_columns, hi = 0;
-    for (Index r = begin; r < end; ++r)
+    for (Index r = row_begin(t); r < row_end(t); ++r)
       for (int c = 0; c < channels_; ++c)
         columns(r, c, [&](Index I) {
           lo = std::min(lo, I);

@@ -145,6 +145,7 @@ class RowScatter {
  private:
   Vec3 thread_sum(int channel, Index I) const;
   std::pair<Index, Index> reduce_block(int t) const;
+  void split_rows(Index first_row, Index end_row);
   bool seam(Index I) const { return !slot_.empty() && slot_[static_cast<std::size_t>(I)] >= 0; }
   void exchange_records(int channel);
 
