@@ -52,10 +52,15 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
     scatter.clear(t);
     for (Index J = std::max(scatter.row_begin(t), begin); J < std::min(scatter.row_end(t), end); ++J) {
       const Vec3& fJ = f[J];
-      const auto sink = scatter.sink(t, 0, J);
-      // Most particles carry no point force; a row at a seam still records its zeros.
-      if (fJ.isZero(0.0) && !sink.records()) continue;
-      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sink(N.col[k], Vec3(N.psi[k] * fJ));
+      const auto transfer = [&](const auto& add) {
+        for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) add(N.col[k], Vec3(N.psi[k] * fJ));
+      };
+      // A row at a seam makes every contribution, zeros too (its plan counts them); the
+      // others add in place and skip the many particles that carry no point force.
+      if (scatter.seam_row(J))
+        transfer(scatter.sink(t, 0, J));
+      else if (!fJ.isZero(0.0))
+        transfer(rk::RowScatter::AddTo{scatter.buffer(t, 0)});
     }
 #pragma omp barrier
     scatter.reduce_add(t, 0, 1.0, body.force);
@@ -69,6 +74,13 @@ void plan_term_rows(rk::RowScatter& scatter, const Body& body, Index first, Inde
   const bool linked = body.distributed() && ghosts->built();
   const rk::RowScatter::Links links = linked ? ghosts->scatter_links() : rk::RowScatter::Links{};
   scatter.plan_ordered(first, end, static_cast<Index>(body.size()), 1, channels, columns, linked ? &links : nullptr);
+}
+
+std::pair<Index, Index> owned_entries(const Body& body, const std::vector<Index>& by_particle) {
+  const auto at = [&](Index particle) {
+    return static_cast<Index>(std::lower_bound(by_particle.begin(), by_particle.end(), particle) - by_particle.begin());
+  };
+  return {at(body.owned_begin()), at(body.owned_end())};
 }
 
 void add_term_rows(rk::RowScatter& scatter, int channel, double scale, std::vector<Vec3>& out) {

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rkpm::sim {
@@ -40,6 +41,9 @@ void plan_term_rows(rk::RowScatter& scatter, const Body& body, Index first, Inde
 // increasing order): out[I] += scale * the sum of the contributions at I, at every
 // particle this rank owns (collective on a distributed body).
 void add_term_rows(rk::RowScatter& scatter, int channel, double scale, std::vector<Vec3>& out);
+// The entries [first, end) of a list sorted by particle (`by_particle[k]` the particle
+// entry k belongs to) whose particle this rank owns: a term's own rows.
+std::pair<Index, Index> owned_entries(const Body& body, const std::vector<Index>& by_particle);
 
 // Generalized forces of point forces at every particle: force_I += sum_J Psi_I(X_J) f_J,
 // scattered from the interpolation's rows into per-thread buffers, ordered over
@@ -60,10 +64,7 @@ void add_point_forces(Body& body, const std::vector<Index>& particles, double sc
                       rk::RowScatter& scatter) {
   const auto& N = body.interpolation;
   const bool rows = !N.row_offset.empty();
-  const auto first = static_cast<Index>(std::lower_bound(particles.begin(), particles.end(), body.owned_begin()) -
-                                        particles.begin());
-  const auto end = static_cast<Index>(std::lower_bound(particles.begin(), particles.end(), body.owned_end()) -
-                                      particles.begin());
+  const auto [first, end] = owned_entries(body, particles);
   if (!scatter.planned_for(1))
     plan_term_rows(scatter, body, first, end, 1, [&](Index i, int, const std::function<void(Index)>& emit) {
       const Index J = particles[static_cast<std::size_t>(i)];

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <functional>
 #include <stdexcept>
+#include <tuple>
 
 namespace rkpm::sim {
 
@@ -22,9 +23,7 @@ SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double p
       force_(body.size(), Vec3::Zero()) {
   // A cell's facets are listed together, cells in increasing order: a rank's cells' are
   // one range.
-  const auto& owner = quadrature_.owner;
-  first_facet_ = static_cast<Index>(std::lower_bound(owner.begin(), owner.end(), body.owned_begin()) - owner.begin());
-  end_facet_ = static_cast<Index>(std::lower_bound(owner.begin(), owner.end(), body.owned_end()) - owner.begin());
+  std::tie(first_facet_, end_facet_) = owned_entries(body, quadrature_.owner);
   plan_term_rows(scatter_, body, first_facet_, end_facet_, 1, [this](Index f, int, const std::function<void(Index)>& emit) {
     for (Index k = quadrature_.row_offset[f]; k < quadrature_.row_offset[f + 1]; ++k) emit(quadrature_.col[k]);
   });

@@ -13,6 +13,7 @@
 #include <functional>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 
 namespace rkpm::sim {
 
@@ -49,8 +50,7 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
   if (body.distributed()) {
     check_ghosts();
-    first_row_ = static_cast<Index>(std::lower_bound(owner_.begin(), owner_.end(), body.owned_begin()) - owner_.begin());
-    end_row_ = static_cast<Index>(std::lower_bound(owner_.begin(), owner_.end(), body.owned_end()) - owner_.begin());
+    std::tie(first_row_, end_row_) = owned_entries(body, owner_);
     plan_term_rows(push_, body, first_row_, end_row_, 1, [this](Index r, int, const std::function<void(Index)>& emit) {
       for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) emit(col_[k]);
     });
