@@ -1,34 +1,50 @@
 #include "rkpm/sim/essential_bc.hpp"
 
+#include "rkpm/par/ghost_exchange.hpp"
+#include "rkpm/par/shared_particles.hpp"
+
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace rkpm::sim {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-struct EssentialBC::Axis {
-  std::vector<Index> particles;        // constrained particles of this axis, ascending
-  std::vector<Index> local;            // particle -> position in `particles`, or -1
-  Eigen::VectorXd velocity;            // prescribed d ubar / dt
-  Eigen::VectorXd target;              // ubar at the current time
+// The axes that constrain one set of particles C, and what their transformation needs.
+struct EssentialBC::Group {
+  std::vector<int> axes;               // ascending; column j of the matrices below is axes[j]
+  std::vector<Index> particles;        // C, ascending
+  Eigen::MatrixXd velocity;            // prescribed d ubar / dt, |C| x axes
+  Eigen::MatrixXd target;              // ubar at the current time, |C| x axes
   std::vector<Index> cf_offset;        // Lambda_CF by rows of C (CSR)
   std::vector<Index> cf_col;
   std::vector<double> cf_val;
   Eigen::SparseLU<SparseMatrix> lu;    // Lambda_CC
   Eigen::SparseLU<SparseMatrix> lu_t;  // Lambda_CC^T
+  // The rows whose free part this rank forms: all of them on one rank, those of the
+  // particles it owns when distributed (a run of C: ranks own increasing ranges).
+  std::size_t row_begin = 0, row_end = 0;
+  // The entries of Lambda_CF whose column this rank owns, in row order: (row, entry).
+  std::vector<std::pair<std::size_t, Index>> owned_entries;
+  par::SharedParticles shared;         // distributed: C on every rank
+  par::GhostExchange columns;          // distributed: the columns of this rank's rows it does not own
 
-  // y = Lambda_CF z (the free part of the constraint rows), for one component.
-  Eigen::VectorXd free_part(const std::vector<Vec3>& z, int axis) const {
-    Eigen::VectorXd y(static_cast<Eigen::Index>(particles.size()));
-    for (std::size_t r = 0; r < particles.size(); ++r) {
-      double s = 0.0;
-      for (Index k = cf_offset[r]; k < cf_offset[r + 1]; ++k) s += cf_val[k] * z[cf_col[k]][axis];
-      y(static_cast<Eigen::Index>(r)) = s;
+  Index size() const { return static_cast<Index>(particles.size()); }
+
+  // y[r] = (Lambda_CF z)_r for this rank's rows, every component; on several ranks the
+  // other rows' sums are then gathered from their owners.
+  void free_part(const std::vector<Vec3>& z, std::vector<Vec3>& y) const {
+    y.assign(particles.size(), Vec3::Zero());
+    for (std::size_t r = row_begin; r < row_end; ++r) {
+      Vec3 s = Vec3::Zero();
+      for (Index k = cf_offset[r]; k < cf_offset[r + 1]; ++k) s += cf_val[static_cast<std::size_t>(k)] * z[cf_col[k]];
+      y[r] = s;
     }
-    return y;
+    if (shared.built()) shared.update_packed(y);
   }
 };
 
@@ -46,105 +62,148 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
       throw std::invalid_argument("EssentialBC: constrained component out of range");
     mask_[c.particle][c.axis] = 1;
   }
+  std::array<std::vector<Index>, 3> set;
+  std::array<std::vector<double>, 3> velocity_of;
   for (int a = 0; a < 3; ++a) {
-    auto ax = std::make_unique<Axis>();
-    ax->local.assign(n, -1);
-    std::vector<double> vel_of(n, 0.0);
+    velocity_of[a].assign(n, 0.0);
     for (const auto& c : components)
-      if (c.axis == a) vel_of[c.particle] = c.velocity;  // the last declaration wins
+      if (c.axis == a) velocity_of[a][c.particle] = c.velocity;  // the last declaration wins
     for (std::size_t i = 0; i < n; ++i)
-      if (mask_[i][a]) {
-        ax->local[i] = static_cast<Index>(ax->particles.size());
-        ax->particles.push_back(static_cast<Index>(i));
-      }
-    if (ax->particles.empty()) continue;
-    const auto m = static_cast<Eigen::Index>(ax->particles.size());
-    ax->velocity.resize(m);
-    ax->target.resize(m);
+      if (mask_[i][a]) set[a].push_back(static_cast<Index>(i));
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (set[a].empty()) continue;
+    const auto same = std::find_if(groups_.begin(), groups_.end(), [&](const auto& g) { return g->particles == set[a]; });
+    if (same != groups_.end()) {
+      (*same)->axes.push_back(a);
+      continue;
+    }
+    auto g = std::make_unique<Group>();
+    g->axes = {a};
+    g->particles = set[a];
+    std::vector<Index> local(n, -1);
+    for (std::size_t r = 0; r < g->particles.size(); ++r) local[g->particles[r]] = static_cast<Index>(r);
     std::vector<Eigen::Triplet<double>> cc;
-    ax->cf_offset.push_back(0);
-    for (Eigen::Index r = 0; r < m; ++r) {
-      const Index J = ax->particles[static_cast<std::size_t>(r)];
-      ax->velocity(r) = vel_of[J];
-      double u = 0.0;  // physical displacement at J now: the initial target
+    g->cf_offset.push_back(0);
+    for (std::size_t r = 0; r < g->particles.size(); ++r) {
+      const Index J = g->particles[r];
       for (Index k = interp.row_offset[J]; k < interp.row_offset[J + 1]; ++k) {
         const Index I = interp.col[k];
-        u += interp.psi[k] * d[I][a];
-        if (ax->local[I] >= 0) {
-          cc.emplace_back(r, ax->local[I], interp.psi[k]);
+        if (local[I] >= 0) {
+          cc.emplace_back(static_cast<Eigen::Index>(r), local[I], interp.psi[k]);
         } else {
-          ax->cf_col.push_back(I);
-          ax->cf_val.push_back(interp.psi[k]);
+          g->cf_col.push_back(I);
+          g->cf_val.push_back(interp.psi[k]);
         }
       }
-      ax->target(r) = u;
-      ax->cf_offset.push_back(static_cast<Index>(ax->cf_col.size()));
+      g->cf_offset.push_back(static_cast<Index>(g->cf_col.size()));
     }
+    const auto m = g->size();
     SparseMatrix Lcc(m, m);
     Lcc.setFromTriplets(cc.begin(), cc.end());
-    ax->lu.compute(Lcc);
+    g->lu.compute(Lcc);
     SparseMatrix Lcc_t = Lcc.transpose();
-    ax->lu_t.compute(Lcc_t);
-    if (ax->lu.info() != Eigen::Success || ax->lu_t.info() != Eigen::Success)
+    g->lu_t.compute(Lcc_t);
+    if (g->lu.info() != Eigen::Success || g->lu_t.info() != Eigen::Success)
       throw std::runtime_error("essential boundary conditions: the shape-function matrix of the constrained "
                                "particles is singular (axis " + std::string(1, "xyz"[a]) + ")");
-    components_ += ax->particles.size();
-    axes_[static_cast<std::size_t>(a)] = std::move(ax);
+    g->row_end = g->particles.size();
+    for (std::size_t r = 0; r < g->particles.size(); ++r)
+      for (Index k = g->cf_offset[r]; k < g->cf_offset[r + 1]; ++k) g->owned_entries.emplace_back(r, k);
+    groups_.push_back(std::move(g));
+  }
+  for (auto& g : groups_) {
+    const auto m = g->size();
+    const auto axes = static_cast<Eigen::Index>(g->axes.size());
+    g->velocity.resize(m, axes);
+    g->target.resize(m, axes);
+    for (Eigen::Index r = 0; r < m; ++r) {
+      const Index J = g->particles[static_cast<std::size_t>(r)];
+      Vec3 u = Vec3::Zero();  // the physical displacement at J now: the initial targets
+      for (Index k = interp.row_offset[J]; k < interp.row_offset[J + 1]; ++k) u += interp.psi[k] * d[interp.col[k]];
+      for (Eigen::Index j = 0; j < axes; ++j) {
+        const int a = g->axes[static_cast<std::size_t>(j)];
+        g->velocity(r, j) = velocity_of[a][J];
+        g->target(r, j) = u[a];
+      }
+    }
+    components_ += g->particles.size() * g->axes.size();
   }
 }
 
 void EssentialBC::distribute(const par::Comm& comm, const std::vector<Index>& offset) {
-  std::vector<Index> constrained, rows;
-  for (const auto& ax : axes_) {
-    if (!ax) continue;
-    constrained.insert(constrained.end(), ax->particles.begin(), ax->particles.end());
-    rows.insert(rows.end(), ax->cf_col.begin(), ax->cf_col.end());
+  const Index begin = offset[static_cast<std::size_t>(comm.rank())];
+  const Index end = offset[static_cast<std::size_t>(comm.rank()) + 1];
+  for (auto& g : groups_) {
+    const auto& C = g->particles;
+    g->row_begin = static_cast<std::size_t>(std::lower_bound(C.begin(), C.end(), begin) - C.begin());
+    g->row_end = static_cast<std::size_t>(std::lower_bound(C.begin(), C.end(), end) - C.begin());
+    std::vector<Index> columns;
+    for (std::size_t r = g->row_begin; r < g->row_end; ++r)
+      columns.insert(columns.end(), g->cf_col.begin() + g->cf_offset[r], g->cf_col.begin() + g->cf_offset[r + 1]);
+    g->columns.build(comm, offset, std::move(columns));
+    g->shared.build(comm, offset, C);
+    g->owned_entries.clear();
+    for (std::size_t r = 0; r < C.size(); ++r)
+      for (Index k = g->cf_offset[r]; k < g->cf_offset[r + 1]; ++k)
+        if (g->cf_col[static_cast<std::size_t>(k)] >= begin && g->cf_col[static_cast<std::size_t>(k)] < end)
+          g->owned_entries.emplace_back(r, k);
   }
-  rows.insert(rows.end(), constrained.begin(), constrained.end());
-  constrained_.build(comm, offset, std::move(constrained));
-  rows_.build(comm, offset, std::move(rows));
 }
 
 double EssentialBC::transform_forces(std::vector<Vec3>& f) const {
-  if (constrained_.built()) constrained_.update(f);
   double support_power = 0.0;
-  for (int a = 0; a < 3; ++a) {
-    const Axis* ax = axes_[static_cast<std::size_t>(a)].get();
-    if (!ax) continue;
-    Eigen::VectorXd fc(static_cast<Eigen::Index>(ax->particles.size()));
-    for (std::size_t r = 0; r < ax->particles.size(); ++r) fc(static_cast<Eigen::Index>(r)) = f[ax->particles[r]][a];
-    const Eigen::VectorXd reaction = ax->lu_t.solve(fc);  // Lambda_CC^-T f_C
-    for (std::size_t r = 0; r < ax->particles.size(); ++r) {
-      const double rr = reaction(static_cast<Eigen::Index>(r));
-      for (Index k = ax->cf_offset[r]; k < ax->cf_offset[r + 1]; ++k) f[ax->cf_col[k]][a] -= ax->cf_val[k] * rr;
-      f[ax->particles[r]][a] = 0.0;
-    }
+  for (const auto& g : groups_) {
+    if (g->shared.built()) g->shared.update(f);
+    const auto m = g->size();
+    const auto axes = static_cast<Eigen::Index>(g->axes.size());
+    Eigen::MatrixXd fc(m, axes);
+    for (Eigen::Index r = 0; r < m; ++r)
+      for (Eigen::Index j = 0; j < axes; ++j) fc(r, j) = f[g->particles[static_cast<std::size_t>(r)]][g->axes[static_cast<std::size_t>(j)]];
+    const Eigen::MatrixXd reaction = g->lu_t.solve(fc);  // Lambda_CC^-T f_C
+    for (const auto& [r, k] : g->owned_entries)
+      for (Eigen::Index j = 0; j < axes; ++j)
+        f[g->cf_col[static_cast<std::size_t>(k)]][g->axes[static_cast<std::size_t>(j)]] -=
+            g->cf_val[static_cast<std::size_t>(k)] * reaction(static_cast<Eigen::Index>(r), j);
+    for (Eigen::Index r = 0; r < m; ++r)
+      for (int a : g->axes) f[g->particles[static_cast<std::size_t>(r)]][a] = 0.0;
     // The supports hold the constrained points against the net force r: their force is -r.
-    support_power -= reaction.dot(ax->velocity);
+    for (Eigen::Index j = 0; j < axes; ++j) support_power -= reaction.col(j).dot(g->velocity.col(j));
   }
   return support_power;
 }
 
 void EssentialBC::impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const {
-  if (rows_.built()) {
-    rows_.update(d);
-    rows_.update(v);
-  }
-  for (int a = 0; a < 3; ++a) {
-    const Axis* ax = axes_[static_cast<std::size_t>(a)].get();
-    if (!ax) continue;
-    const Eigen::VectorXd dc = ax->lu.solve(ax->target - ax->free_part(d, a));
-    const Eigen::VectorXd vc = ax->lu.solve(ax->velocity - ax->free_part(v, a));
-    for (std::size_t r = 0; r < ax->particles.size(); ++r) {
-      d[ax->particles[r]][a] = dc(static_cast<Eigen::Index>(r));
-      v[ax->particles[r]][a] = vc(static_cast<Eigen::Index>(r));
+  for (const auto& g : groups_) {
+    if (g->columns.built()) {
+      g->columns.pull(d);
+      g->columns.pull(v);
     }
+    std::vector<Vec3> free_d, free_v;
+    g->free_part(d, free_d);
+    g->free_part(v, free_v);
+    // d_C and v_C in one solve: a column per axis for each.
+    const auto m = g->size();
+    const auto axes = static_cast<Eigen::Index>(g->axes.size());
+    Eigen::MatrixXd rhs(m, 2 * axes);
+    for (Eigen::Index r = 0; r < m; ++r)
+      for (Eigen::Index j = 0; j < axes; ++j) {
+        const int a = g->axes[static_cast<std::size_t>(j)];
+        rhs(r, j) = g->target(r, j) - free_d[static_cast<std::size_t>(r)][a];
+        rhs(r, axes + j) = g->velocity(r, j) - free_v[static_cast<std::size_t>(r)][a];
+      }
+    const Eigen::MatrixXd solution = g->lu.solve(rhs);
+    for (Eigen::Index r = 0; r < m; ++r)
+      for (Eigen::Index j = 0; j < axes; ++j) {
+        const int a = g->axes[static_cast<std::size_t>(j)];
+        d[g->particles[static_cast<std::size_t>(r)]][a] = solution(r, j);
+        v[g->particles[static_cast<std::size_t>(r)]][a] = solution(r, axes + j);
+      }
   }
 }
 
 void EssentialBC::advance(double dt, std::vector<Vec3>& d, std::vector<Vec3>& v) {
-  for (auto& ax : axes_)
-    if (ax) ax->target += dt * ax->velocity;
+  for (auto& g : groups_) g->target += dt * g->velocity;
   impose(d, v);
 }
 
@@ -152,22 +211,28 @@ bool EssentialBC::constrained(Index particle, int axis) const {
   return !mask_.empty() && mask_[particle][axis];
 }
 
+// Per axis in order x, y, z, its constrained particles in ascending order (the order
+// checkpoints store).
 std::vector<double> EssentialBC::targets() const {
   std::vector<double> t;
-  for (const auto& ax : axes_)
-    if (ax) t.insert(t.end(), ax->target.data(), ax->target.data() + ax->target.size());
+  for (int a = 0; a < 3; ++a)
+    for (const auto& g : groups_)
+      for (std::size_t j = 0; j < g->axes.size(); ++j)
+        if (g->axes[j] == a)
+          for (Eigen::Index r = 0; r < g->size(); ++r) t.push_back(g->target(r, static_cast<Eigen::Index>(j)));
   return t;
 }
 
 void EssentialBC::set_targets(const std::vector<double>& t) {
   std::size_t k = 0;
-  for (auto& ax : axes_) {
-    if (!ax) continue;
-    for (Eigen::Index r = 0; r < ax->target.size(); ++r) {
-      if (k >= t.size()) throw std::invalid_argument("EssentialBC::set_targets: too few values");
-      ax->target(r) = t[k++];
-    }
-  }
+  for (int a = 0; a < 3; ++a)
+    for (auto& g : groups_)
+      for (std::size_t j = 0; j < g->axes.size(); ++j)
+        if (g->axes[j] == a)
+          for (Eigen::Index r = 0; r < g->size(); ++r) {
+            if (k >= t.size()) throw std::invalid_argument("EssentialBC::set_targets: too few values");
+            g->target(r, static_cast<Eigen::Index>(j)) = t[k++];
+          }
   if (k != t.size()) throw std::invalid_argument("EssentialBC::set_targets: too many values");
 }
 

@@ -10,12 +10,15 @@
 // force that drives the free coordinates is the transformed one
 //     f~_F = f_F - Lambda_CF^T Lambda_CC^-T f_C,
 // and the lumped mass of the free coordinates is kept (the usual lumped
-// transformation, Chen et al. 1996). Each axis has its own set and factorization,
-// built once; the step costs two sparse solves per constrained axis.
+// transformation, Chen et al. 1996). Lambda_CC depends only on the set C, so the axes
+// that constrain the same particles (all three, for a fixed surface) share one
+// factorization, built once, and one solve with a column per axis: a step costs two
+// sparse solves per distinct set (one for the displacements and velocities together,
+// one for the reactions).
 #pragma once
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/par/shared_particles.hpp"
+#include "rkpm/par/comm.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
 
 #include <array>
@@ -57,9 +60,13 @@ class EssentialBC {
   void impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const;
 
   // Distributed runs: the constrained rows couple particles of several ranks, and the
-  // small system Lambda_CC is solved redundantly on every rank. Before each solve the
-  // values it reads (d and v at the constrained particles and their rows' columns, f at
-  // the constrained particles) are gathered from their owners (par/shared_particles.hpp).
+  // small system Lambda_CC is solved redundantly on every rank (its inverse is dense:
+  // no split of it gives the one-process bits). What is split is the work per row:
+  // each rank forms the free part Lambda_CF d of the rows of the constrained particles
+  // it owns (pulling the columns it does not own from their owners), and the ranks
+  // gather those sums (par/shared_particles.hpp), so the solve reads the same values
+  // everywhere; the reactions' transfer -Lambda_CF^T r is applied by each rank to the
+  // columns it owns. f at the constrained particles is gathered before that solve.
   void distribute(const par::Comm& comm, const std::vector<Index>& offset);
 
   // Particle/axis pairs that are constrained, for masks in the integrator.
@@ -70,12 +77,10 @@ class EssentialBC {
   void set_targets(const std::vector<double>& t);
 
  private:
-  struct Axis;
-  std::array<std::unique_ptr<Axis>, 3> axes_;
+  struct Group;
+  std::vector<std::unique_ptr<Group>> groups_;  // by their lowest axis
   std::vector<std::array<char, 3>> mask_;
   std::size_t components_ = 0;
-  par::SharedParticles rows_;         // distributed: the constrained particles and their rows' columns
-  par::SharedParticles constrained_;  // distributed: the constrained particles
 };
 
 }  // namespace rkpm::sim
