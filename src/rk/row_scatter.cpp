@@ -114,6 +114,10 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
                                            "holds as a ghost", links_.rank, i));
     }
   }
+  // At a particle several ranks share, the lowest rank whose rows reach it makes the
+  // first contributions (ranks own increasing ranges of rows), so its first thread adds
+  // in place there too and the sum goes out as one record.
+  const std::vector<char> lowest = linked_ ? lowest_reaching_rank(reached_by) : std::vector<char>{};
   seams_.clear();
   owned_.clear();
   first_.clear();
@@ -123,7 +127,7 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
       seams_.push_back(static_cast<Index>(I));
       const auto i = static_cast<Index>(I);
       owned_.push_back(!linked_ || (i >= links_.owned_begin && i < links_.owned_end) ? 1 : 0);
-      first_.push_back(linked_ && rank_shared[I] != 0 ? -1 : static_cast<int>(first_reach[I]));
+      first_.push_back(linked_ && rank_shared[I] != 0 && lowest[I] == 0 ? -1 : static_cast<int>(first_reach[I]));
     }
   const std::size_t ns = seams_.size();
 
@@ -151,8 +155,9 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
       std::vector<std::vector<std::int64_t>> send(ranks), recv;
       for (std::size_t p = 0; p < ranks; ++p)
         for (Index g : (*links_.ghosts)[p]) {
-          std::int64_t own = 0;
-          for (std::size_t t = 0; t < nt; ++t) own += ch.start[t][static_cast<std::size_t>(slot_[static_cast<std::size_t>(g)])];
+          const auto s = static_cast<std::size_t>(slot_[static_cast<std::size_t>(g)]);
+          std::int64_t own = first_[s] >= 0 ? 1 : 0;  // the first thread's sum
+          for (std::size_t t = 0; t < nt; ++t) own += ch.start[t][s];
           send[p].push_back(own);
         }
       links_.exchange_counts(send, recv);
@@ -235,11 +240,18 @@ void RowScatter::exchange_records(int channel) {
   const auto ranks = send_.size();
   for (std::size_t p = 0; p < ranks; ++p) {
     send_[p].clear();
-    for (std::size_t j = 0; j < ch.send_at[p].size(); ++j)
+    for (std::size_t j = 0; j < ch.send_at[p].size(); ++j) {
+      const auto g = static_cast<std::size_t>((*links_.ghosts)[p][j]);
+      const int first = first_[static_cast<std::size_t>(slot_[g])];
+      if (first >= 0) {  // this rank's first contributions: the owner's fold starts from their sum
+        const Vec3& v = buffers_[static_cast<std::size_t>(first * channels_ + channel)][g];
+        send_[p].insert(send_[p].end(), v.data(), v.data() + 3);
+      }
       for (Index k = 0; k < ch.send_count[p][j]; ++k) {
         const Vec3& v = ch.records[static_cast<std::size_t>(ch.send_at[p][j] + k)];
         send_[p].insert(send_[p].end(), v.data(), v.data() + 3);
       }
+    }
     Index expected = 0;
     for (Index count : ch.recv_count[p]) expected += count;
     recv_[p].assign(3 * static_cast<std::size_t>(expected), 0.0);
@@ -282,9 +294,48 @@ void RowScatter::fold(int channel, double scale, std::vector<Vec3>& out, bool ad
 std::size_t RowScatter::records_sent() const {
   std::size_t n = 0;
   for (const auto& ch : ordered_)
-    for (const auto& counts : ch.send_count)
-      for (Index c : counts) n += static_cast<std::size_t>(c);
+    for (std::size_t p = 0; p < ch.send_count.size(); ++p)
+      for (std::size_t j = 0; j < ch.send_count[p].size(); ++j) {
+        const auto g = static_cast<std::size_t>((*links_.ghosts)[p][j]);
+        n += static_cast<std::size_t>(ch.send_count[p][j]) + (first_[static_cast<std::size_t>(slot_[g])] >= 0 ? 1 : 0);
+      }
   return n;
+}
+
+// Per particle this rank shares with others: 1 when it is the lowest rank whose rows
+// reach it. The holders tell each owner which of its particles their rows reach; the
+// owner, which knows every holder, answers each with the lowest.
+std::vector<char> RowScatter::lowest_reaching_rank(const std::vector<Index>& reached_by) const {
+  constexpr Index kUntouched = -1;
+  const auto ranks = links_.ghosts->size();
+  const auto me = static_cast<std::size_t>(links_.rank);
+  std::vector<std::vector<std::int64_t>> reach(ranks), heard;
+  for (std::size_t p = 0; p < ranks; ++p)
+    for (Index g : (*links_.ghosts)[p]) reach[p].push_back(reached_by[static_cast<std::size_t>(g)] != kUntouched ? 1 : 0);
+  links_.exchange_counts(reach, heard);
+  // For each particle this rank owns and others hold: the lowest rank reaching it.
+  std::vector<std::int64_t> lowest_of(reached_by.size(), static_cast<std::int64_t>(ranks));
+  for (std::size_t p = 0; p < ranks; ++p)
+    for (std::size_t j = 0; j < (*links_.holders)[p].size(); ++j) {
+      const auto I = static_cast<std::size_t>((*links_.holders)[p][j]);
+      if (reached_by[I] != kUntouched) lowest_of[I] = std::min<std::int64_t>(lowest_of[I], static_cast<std::int64_t>(me));
+      if (j < heard[p].size() && heard[p][j] != 0) lowest_of[I] = std::min<std::int64_t>(lowest_of[I], static_cast<std::int64_t>(p));
+    }
+  std::vector<std::vector<std::int64_t>> answer(ranks), told;
+  for (std::size_t p = 0; p < ranks; ++p)
+    for (Index I : (*links_.holders)[p]) answer[p].push_back(lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(p) ? 1 : 0);
+  links_.exchange_counts(answer, told);
+  std::vector<char> lowest(reached_by.size(), 0);
+  for (std::size_t p = 0; p < ranks; ++p) {
+    if (told[p].size() != (*links_.ghosts)[p].size())
+      throw std::logic_error(fmt::format("ordered scatter: rank {} answered for {} of the {} particles rank {} holds "
+                                         "of it", p, told[p].size(), (*links_.ghosts)[p].size(), links_.rank));
+    for (std::size_t j = 0; j < told[p].size(); ++j)
+      if (told[p][j] != 0) lowest[static_cast<std::size_t>((*links_.ghosts)[p][j])] = 1;
+    for (Index I : (*links_.holders)[p])
+      if (lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(me)) lowest[static_cast<std::size_t>(I)] = 1;
+  }
+  return lowest;
 }
 
 std::size_t RowScatter::record_count() const {

@@ -22,11 +22,14 @@
 // threads record theirs one by one, each in its own segment; the fold then starts from
 // the first thread's sum and adds the records in block order, which is row order: the
 // same additions in the same order as one thread makes them. At a column shared with
-// another rank every thread records; the records of a ghost column are sent to its
+// another rank the threads record too; the records of a ghost column are sent to its
 // owner (`Links`), which folds them in rank order with its own: ranks own contiguous,
-// increasing ranges of rows (par/partition.hpp). Seams are a thin layer at
-// the block boundaries, so the recording costs little. The plan is checked at every
-// fold: a row that made other contributions than it declared is an internal error.
+// increasing ranges of rows (par/partition.hpp). The lowest rank whose rows reach a
+// shared column makes its first contributions, so its first thread there adds in
+// place and sends the sum as one record, which starts the owner's fold. Seams are a
+// thin layer at the block boundaries, so the recording costs little. The plan is
+// checked at every fold: a row that made other contributions than it declared is an
+// internal error.
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -148,6 +151,7 @@ class RowScatter {
   void split_rows(Index first_row, Index end_row);
   bool seam(Index I) const { return !slot_.empty() && slot_[static_cast<std::size_t>(I)] >= 0; }
   void exchange_records(int channel);
+  std::vector<char> lowest_reaching_rank(const std::vector<Index>& reached_by) const;
 
   int threads_ = 0;
   int channels_ = 0;
@@ -161,9 +165,9 @@ class RowScatter {
   std::vector<Index> slot_;                   // per column: its seam index, or -1
   std::vector<Index> seams_;                  // per seam: its column
   std::vector<char> owned_;                   // per seam: 1 when this rank owns the column
-  // Per seam that only this rank's threads reach: the first thread that reaches it,
-  // which adds its contributions in its buffer (their sum is the fold's start); -1 for
-  // a seam shared with other ranks, where every thread records.
+  // Per seam: the first thread that reaches it, which adds its contributions in its
+  // buffer (their sum starts the fold, or is sent to the owner as its first record);
+  // -1 at a column shared with a lower rank that reaches it, where every thread records.
   std::vector<int> first_;
   std::vector<std::uint8_t> seam_row_;        // per row from first_row_: 1 when it reaches a seam
   struct Channel {
