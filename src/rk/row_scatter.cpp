@@ -16,6 +16,9 @@ std::pair<Index, Index> static_block(Index n, int t, int threads) {
   const Index begin = t * base + std::min<Index>(t, extra);
   return {begin, begin + base + (t < extra ? 1 : 0)};
 }
+
+constexpr Index kUntouched = -1;  // reached_by: no row of this rank reaches the column
+constexpr Index kSeveral = -2;    // reached_by: rows of several threads reach it
 }  // namespace
 
 // Thread t's rows: block t of OpenMP's static schedule over [first_row, end_row).
@@ -80,7 +83,6 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
   // Seams: columns reached by the rows of two threads, and columns shared with another
   // rank (its ghosts, and its own particles that other ranks hold).
   slot_.assign(n, -1);
-  constexpr Index kUntouched = -1, kSeveral = -2;
   std::vector<Index> reached_by(n, kUntouched), first_reach(n, kUntouched);
   for (int t = 0; t < threads_; ++t) {
     Index lo = n_columns, hi = 0;
@@ -156,7 +158,7 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
       for (std::size_t p = 0; p < ranks; ++p)
         for (Index g : (*links_.ghosts)[p]) {
           const auto s = static_cast<std::size_t>(slot_[static_cast<std::size_t>(g)]);
-          std::int64_t own = first_[s] >= 0 ? 1 : 0;  // the first thread's sum
+          std::int64_t own = sends_first_sum(g) ? 1 : 0;
           for (std::size_t t = 0; t < nt; ++t) own += ch.start[t][s];
           send[p].push_back(own);
         }
@@ -241,10 +243,10 @@ void RowScatter::exchange_records(int channel) {
   for (std::size_t p = 0; p < ranks; ++p) {
     send_[p].clear();
     for (std::size_t j = 0; j < ch.send_at[p].size(); ++j) {
-      const auto g = static_cast<std::size_t>((*links_.ghosts)[p][j]);
-      const int first = first_[static_cast<std::size_t>(slot_[g])];
-      if (first >= 0) {  // this rank's first contributions: the owner's fold starts from their sum
-        const Vec3& v = buffers_[static_cast<std::size_t>(first * channels_ + channel)][g];
+      const Index g = (*links_.ghosts)[p][j];
+      if (sends_first_sum(g)) {  // this rank's first contributions: the owner's fold starts from their sum
+        const int first = first_[static_cast<std::size_t>(slot_[static_cast<std::size_t>(g)])];
+        const Vec3& v = buffers_[static_cast<std::size_t>(first * channels_ + channel)][static_cast<std::size_t>(g)];
         send_[p].insert(send_[p].end(), v.data(), v.data() + 3);
       }
       for (Index k = 0; k < ch.send_count[p][j]; ++k) {
@@ -295,10 +297,8 @@ std::size_t RowScatter::records_sent() const {
   std::size_t n = 0;
   for (const auto& ch : ordered_)
     for (std::size_t p = 0; p < ch.send_count.size(); ++p)
-      for (std::size_t j = 0; j < ch.send_count[p].size(); ++j) {
-        const auto g = static_cast<std::size_t>((*links_.ghosts)[p][j]);
-        n += static_cast<std::size_t>(ch.send_count[p][j]) + (first_[static_cast<std::size_t>(slot_[g])] >= 0 ? 1 : 0);
-      }
+      for (std::size_t j = 0; j < ch.send_count[p].size(); ++j)
+        n += static_cast<std::size_t>(ch.send_count[p][j]) + (sends_first_sum((*links_.ghosts)[p][j]) ? 1 : 0);
   return n;
 }
 
@@ -306,24 +306,30 @@ std::size_t RowScatter::records_sent() const {
 // reach it. The holders tell each owner which of its particles their rows reach; the
 // owner, which knows every holder, answers each with the lowest.
 std::vector<char> RowScatter::lowest_reaching_rank(const std::vector<Index>& reached_by) const {
-  constexpr Index kUntouched = -1;
   const auto ranks = links_.ghosts->size();
   const auto me = static_cast<std::size_t>(links_.rank);
   std::vector<std::vector<std::int64_t>> reach(ranks), heard;
   for (std::size_t p = 0; p < ranks; ++p)
-    for (Index g : (*links_.ghosts)[p]) reach[p].push_back(reached_by[static_cast<std::size_t>(g)] != kUntouched ? 1 : 0);
+    for (Index g : (*links_.ghosts)[p])
+      reach[p].push_back(reached_by[static_cast<std::size_t>(g)] != kUntouched ? 1 : 0);
   links_.exchange_counts(reach, heard);
+  for (std::size_t p = 0; p < ranks; ++p)
+    if (heard[p].size() != (*links_.holders)[p].size())
+      throw std::logic_error(fmt::format("ordered scatter: rank {} said which of {} particles its rows reach, of the "
+                                         "{} it holds of rank {}", p, heard[p].size(), (*links_.holders)[p].size(),
+                                         links_.rank));
   // For each particle this rank owns and others hold: the lowest rank reaching it.
   std::vector<std::int64_t> lowest_of(reached_by.size(), static_cast<std::int64_t>(ranks));
   for (std::size_t p = 0; p < ranks; ++p)
     for (std::size_t j = 0; j < (*links_.holders)[p].size(); ++j) {
       const auto I = static_cast<std::size_t>((*links_.holders)[p][j]);
-      if (reached_by[I] != kUntouched) lowest_of[I] = std::min<std::int64_t>(lowest_of[I], static_cast<std::int64_t>(me));
-      if (j < heard[p].size() && heard[p][j] != 0) lowest_of[I] = std::min<std::int64_t>(lowest_of[I], static_cast<std::int64_t>(p));
+      if (reached_by[I] != kUntouched) lowest_of[I] = std::min(lowest_of[I], static_cast<std::int64_t>(me));
+      if (heard[p][j] != 0) lowest_of[I] = std::min(lowest_of[I], static_cast<std::int64_t>(p));
     }
   std::vector<std::vector<std::int64_t>> answer(ranks), told;
   for (std::size_t p = 0; p < ranks; ++p)
-    for (Index I : (*links_.holders)[p]) answer[p].push_back(lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(p) ? 1 : 0);
+    for (Index I : (*links_.holders)[p])
+      answer[p].push_back(lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(p) ? 1 : 0);
   links_.exchange_counts(answer, told);
   std::vector<char> lowest(reached_by.size(), 0);
   for (std::size_t p = 0; p < ranks; ++p) {
@@ -333,7 +339,8 @@ std::vector<char> RowScatter::lowest_reaching_rank(const std::vector<Index>& rea
     for (std::size_t j = 0; j < told[p].size(); ++j)
       if (told[p][j] != 0) lowest[static_cast<std::size_t>((*links_.ghosts)[p][j])] = 1;
     for (Index I : (*links_.holders)[p])
-      if (lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(me)) lowest[static_cast<std::size_t>(I)] = 1;
+      if (lowest_of[static_cast<std::size_t>(I)] == static_cast<std::int64_t>(me))
+        lowest[static_cast<std::size_t>(I)] = 1;
   }
   return lowest;
 }

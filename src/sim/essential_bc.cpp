@@ -35,6 +35,18 @@ struct EssentialBC::Group {
 
   Index size() const { return static_cast<Index>(particles.size()); }
 
+  // This rank's share of the work per row, for particles [begin, end): the rows of its
+  // constrained particles and the entries whose column it owns.
+  void own(Index begin, Index end) {
+    row_begin = static_cast<std::size_t>(std::lower_bound(particles.begin(), particles.end(), begin) - particles.begin());
+    row_end = static_cast<std::size_t>(std::lower_bound(particles.begin(), particles.end(), end) - particles.begin());
+    owned_entries.clear();
+    for (std::size_t r = 0; r < particles.size(); ++r)
+      for (Index k = cf_offset[r]; k < cf_offset[r + 1]; ++k)
+        if (cf_col[static_cast<std::size_t>(k)] >= begin && cf_col[static_cast<std::size_t>(k)] < end)
+          owned_entries.emplace_back(r, k);
+  }
+
   // y[r] = (Lambda_CF z)_r for this rank's rows, every component; on several ranks the
   // other rows' sums are then gathered from their owners.
   void free_part(const std::vector<Vec3>& z, std::vector<Vec3>& y) const {
@@ -73,7 +85,8 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
   }
   for (int a = 0; a < 3; ++a) {
     if (set[a].empty()) continue;
-    const auto same = std::find_if(groups_.begin(), groups_.end(), [&](const auto& g) { return g->particles == set[a]; });
+    const auto same =
+        std::find_if(groups_.begin(), groups_.end(), [&](const auto& g) { return g->particles == set[a]; });
     if (same != groups_.end()) {
       (*same)->axes.push_back(a);
       continue;
@@ -107,9 +120,7 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
     if (g->lu.info() != Eigen::Success || g->lu_t.info() != Eigen::Success)
       throw std::runtime_error("essential boundary conditions: the shape-function matrix of the constrained "
                                "particles is singular (axis " + std::string(1, "xyz"[a]) + ")");
-    g->row_end = g->particles.size();
-    for (std::size_t r = 0; r < g->particles.size(); ++r)
-      for (Index k = g->cf_offset[r]; k < g->cf_offset[r + 1]; ++k) g->owned_entries.emplace_back(r, k);
+    g->own(0, static_cast<Index>(n));
     groups_.push_back(std::move(g));
   }
   for (auto& g : groups_) {
@@ -135,19 +146,12 @@ void EssentialBC::distribute(const par::Comm& comm, const std::vector<Index>& of
   const Index begin = offset[static_cast<std::size_t>(comm.rank())];
   const Index end = offset[static_cast<std::size_t>(comm.rank()) + 1];
   for (auto& g : groups_) {
-    const auto& C = g->particles;
-    g->row_begin = static_cast<std::size_t>(std::lower_bound(C.begin(), C.end(), begin) - C.begin());
-    g->row_end = static_cast<std::size_t>(std::lower_bound(C.begin(), C.end(), end) - C.begin());
+    g->own(begin, end);
     std::vector<Index> columns;
     for (std::size_t r = g->row_begin; r < g->row_end; ++r)
       columns.insert(columns.end(), g->cf_col.begin() + g->cf_offset[r], g->cf_col.begin() + g->cf_offset[r + 1]);
     g->columns.build(comm, offset, std::move(columns));
-    g->shared.build(comm, offset, C);
-    g->owned_entries.clear();
-    for (std::size_t r = 0; r < C.size(); ++r)
-      for (Index k = g->cf_offset[r]; k < g->cf_offset[r + 1]; ++k)
-        if (g->cf_col[static_cast<std::size_t>(k)] >= begin && g->cf_col[static_cast<std::size_t>(k)] < end)
-          g->owned_entries.emplace_back(r, k);
+    g->shared.build(comm, offset, g->particles);
   }
 }
 
@@ -159,7 +163,8 @@ double EssentialBC::transform_forces(std::vector<Vec3>& f) const {
     const auto axes = static_cast<Eigen::Index>(g->axes.size());
     Eigen::MatrixXd fc(m, axes);
     for (Eigen::Index r = 0; r < m; ++r)
-      for (Eigen::Index j = 0; j < axes; ++j) fc(r, j) = f[g->particles[static_cast<std::size_t>(r)]][g->axes[static_cast<std::size_t>(j)]];
+      for (Eigen::Index j = 0; j < axes; ++j)
+        fc(r, j) = f[g->particles[static_cast<std::size_t>(r)]][g->axes[static_cast<std::size_t>(j)]];
     const Eigen::MatrixXd reaction = g->lu_t.solve(fc);  // Lambda_CC^-T f_C
     for (const auto& [r, k] : g->owned_entries)
       for (Eigen::Index j = 0; j < axes; ++j)

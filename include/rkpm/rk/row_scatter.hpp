@@ -152,6 +152,11 @@ class RowScatter {
   bool seam(Index I) const { return !slot_.empty() && slot_[static_cast<std::size_t>(I)] >= 0; }
   void exchange_records(int channel);
   std::vector<char> lowest_reaching_rank(const std::vector<Index>& reached_by) const;
+  // True when this rank makes the first contributions to ghost g: their sum, kept in its
+  // first thread's buffer, goes to the owner ahead of the records.
+  bool sends_first_sum(Index g) const {
+    return first_[static_cast<std::size_t>(slot_[static_cast<std::size_t>(g)])] >= 0;
+  }
 
   int threads_ = 0;
   int channels_ = 0;
