@@ -36,10 +36,9 @@ auto sum_over_bodies(const sim::World& world, Measure measure) {
 
 Footprint footprint(const sim::Body& b) {
   Footprint f;
-  f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation) +
-                (b.rk ? bytes(b.rk->support_radius()) : 0);
-  f.state = bytes(b.d) + bytes(b.v) + bytes(b.a) + bytes(b.x) + bytes(b.force) + bytes(b.F) +
-            bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) + bytes(b.stabilization.residual) +
+  f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation);
+  f.state = bytes(b.d) + bytes(b.v) + bytes(b.x) + bytes(b.force) + bytes(b.F) +
+            bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) +
             material_bytes(b.material) + b.force_scatter.bytes() + b.point_force_scatter.bytes();
   if (b.director) {
     const auto& d = *b.director;
@@ -79,7 +78,6 @@ Traffic internal_force_traffic(const sim::Body& b) {
     // r = (I - N) d, then f -= (I - N)^T W r, both from the rows of N.
     t.operators += interpolation_bytes(b.interpolation) + bytes(b.stabilization.weight);
     t.state_read += bytes(b.d);
-    t.state_written += bytes(b.stabilization.residual);
   }
   return t;
 }

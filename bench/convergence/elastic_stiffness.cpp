@@ -47,18 +47,21 @@ std::vector<Mat3> ElasticStiffness::diagonal_blocks() const {
           gradient_.weight[L] * (mu * b.squaredNorm() * Mat3::Identity() + (mu + lambda) * b * b.transpose());
     }
   if (stabilization_.active()) {
-    // [(I - N)^T W (I - N)]_II = sum_L W_L (delta_LI - Psi_I(X_L))^2.
+    // [(I - N)^T W (I - N)]_II = sum_L W_L (delta_LI - Psi_I(X_L))^2, with the row's
+    // weights in their relative form (rk::for_each_weight): Psi_L(X_L) takes the
+    // correction 1 - sum, so delta_LL - Psi_L(X_L) = sum - psi_L.
     const auto& N = interpolation_;
     for (Index L = 0; L < static_cast<Index>(N.row_offset.size()) - 1; ++L) {
       const double w = stabilization_.weight[L];
+      const double sum = 1.0 - rk::own_weight(N, L);
       bool has_self = false;
       for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) {
         const Index I = N.col[k];
-        const double c = (L == I ? 1.0 : 0.0) - N.psi[k];
+        const double c = (L == I ? sum : 0.0) - static_cast<double>(N.psi[k]);
         has_self = has_self || L == I;
         block[I] += (w * c * c) * Mat3::Identity();
       }
-      if (!has_self) block[L] += w * Mat3::Identity();
+      if (!has_self) block[L] += (w * sum * sum) * Mat3::Identity();
     }
   }
   return block;

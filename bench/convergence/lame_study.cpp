@@ -41,11 +41,7 @@ Field interpolate(const rk::NodalInterpolation& N, const Field& d) {
   const auto n = static_cast<Index>(d.size());
   Field u(d.size());
 #pragma omp parallel for schedule(static)
-  for (Index j = 0; j < n; ++j) {
-    Vec3 s = Vec3::Zero();
-    for (Index k = N.row_offset[j]; k < N.row_offset[j + 1]; ++k) s += N.psi[k] * d[N.col[k]];
-    u[j] = s;
-  }
+  for (Index j = 0; j < n; ++j) u[j] = rk::interpolate(N, d, j);
   return u;
 }
 

@@ -184,14 +184,17 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
 // depend on the threads) and freed as they are joined, so the build holds little
 // beyond the result. (Keeping a ShapeValues per point, with its neighbour-query
 // buffer, held several times the result's memory.)
+// Value: double, or float for storage in single precision (the rows are evaluated in
+// double and rounded as they are stored).
+template <class Value>
 void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
-                         std::vector<Index>& col, std::vector<double>& psi,
+                         std::vector<Index>& col, std::vector<Value>& psi,
                          const std::function<std::string(std::size_t)>& label, const std::vector<char>& rows = {}) {
   const auto selected = [&](std::size_t p) { return rows.empty() || rows[p] != 0; };
   constexpr std::size_t block = 512;
   const std::size_t m = points.size();
   const std::size_t n_blocks = (m + block - 1) / block;
-  std::vector<CsrPiece<double>> pieces(n_blocks);
+  std::vector<CsrPiece<Value>> pieces(n_blocks);
   FirstError error;
 #pragma omp parallel
   {

@@ -63,7 +63,7 @@ void RowScatter::plan(Index first_row, Index end_row, Index n_columns, const std
     col_lo_[static_cast<std::size_t>(t)] = std::min(lo, hi);
     col_hi_[static_cast<std::size_t>(t)] = hi;
   }
-  buffers_.assign(static_cast<std::size_t>(threads_ * channels_), std::vector<Vec3>(n_columns, Vec3::Zero()));
+  allocate_buffers(n_columns);
 }
 
 void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, int threads, int channels,
@@ -212,9 +212,18 @@ void RowScatter::plan_ordered(Index first_row, Index end_row, Index n_columns, i
     ch.records.assign(static_cast<std::size_t>(ch.segment[ns]), Vec3::Zero());
     ch.cursor.assign(nt, std::vector<Index>(ns, 0));
   }
-  buffers_.assign(nt * static_cast<std::size_t>(channels_), std::vector<Vec3>(n, Vec3::Zero()));
+  allocate_buffers(n);
   send_.assign(ranks, {});
   recv_.assign(ranks, {});
+}
+
+// new Vec3[n] leaves the entries uninitialised: a page of a thread's buffer becomes
+// resident only when `clear` or the thread's rows touch it, i.e. within its columns
+// [col_lo, col_hi). Zero-filled vectors made every thread's buffer resident over the
+// whole body (24 B per particle, thread and channel).
+void RowScatter::allocate_buffers(Index n_columns) {
+  buffers_.clear();
+  for (int b = 0; b < threads_ * channels_; ++b) buffers_.emplace_back(static_cast<std::size_t>(n_columns));
 }
 
 void RowScatter::clear(int t) {
@@ -385,7 +394,8 @@ void RowScatter::reduce_add(int t, int channel, double scale, std::vector<Vec3>&
 
 std::size_t RowScatter::bytes() const {
   std::size_t b = (row_begin_.size() + col_lo_.size() + col_hi_.size() + slot_.size() + seams_.size()) * sizeof(Index);
-  for (const auto& v : buffers_) b += v.size() * sizeof(Vec3);
+  for (std::size_t t = 0; t < col_lo_.size(); ++t)  // the resident part (allocate_buffers)
+    b += static_cast<std::size_t>(channels_) * static_cast<std::size_t>(col_hi_[t] - col_lo_[t]) * sizeof(Vec3);
   b += seam_row_.size() + owned_.size() + first_.size() * sizeof(int);
   for (const auto& ch : ordered_) {
     b += ch.records.size() * sizeof(Vec3) + ch.segment.size() * sizeof(Index);

@@ -13,7 +13,6 @@ Stabilization build_stabilization(const std::vector<double>& volume, const std::
   s.weight.resize(volume.size());
   for (std::size_t L = 0; L < volume.size(); ++L)
     s.weight[L] = alpha * shear_modulus[L] * volume[L] / std::cbrt(volume[L] * volume[L]);
-  s.residual.assign(volume.size(), Vec3::Zero());
   return s;
 }
 
@@ -23,8 +22,8 @@ double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, c
   const int threads = omp_get_max_threads();
   if (!s.scatter.planned_for(threads)) s.scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
   std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
-  // r_L = d_L - sum_I Psi_I(X_L) d_I, stored pre-multiplied by W_L; then
-  // f_I -= (W r)_I - sum_L Psi_I(X_L) (W r)_L, scattered from row L.
+  // r_L = d_L - sum_I Psi_I(X_L) d_I, pre-multiplied by W_L; then f -= the transpose
+  // of the residual applied to W r, scattered from row L (scatter_residual).
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num();
@@ -34,9 +33,7 @@ double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, c
       const Vec3 r = interpolation_residual(N, d, L);
       energy[static_cast<std::size_t>(t)] += 0.5 * s.weight[L] * r.squaredNorm();
       const Vec3 wr = s.weight[L] * r;
-      s.residual[L] = wr;
-      sum[L] += wr;
-      for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) sum[N.col[k]] -= N.psi[k] * wr;
+      scatter_residual(N, L, wr, RowScatter::AddTo{sum});
     }
 #pragma omp barrier
     s.scatter.reduce_add(t, 0, -1.0, f);

@@ -15,6 +15,8 @@ DirectorField* director_of(Body& body) { return body.director ? &*body.director 
 const DirectorField* director_of(const Body& body) { return body.director ? &*body.director : nullptr; }
 }  // namespace
 
+rk::RKApproximation approximation(const Body& body) { return rk::RKApproximation(body.cloud, body.rk_settings); }
+
 void update_positions(Body& body) {
   const auto n = static_cast<Index>(body.size());
 #pragma omp parallel for schedule(static)
@@ -96,16 +98,12 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
         stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
         wr = stab.weight[L] * r;
-        stab.residual[L] = wr;
       }
       // The row's contributions, in the order the scatter's plan lists them.
       const auto contribute = [&](const auto& add_force, const auto& add_divergence) {
         rk::scatter_row(op, grad, L, w, P, add_force);
         if (frank) rk::scatter_row(op, grad, L, w, flux, add_divergence);
-        if (stabilized) {
-          add_force(L, wr);
-          for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) add_force(N.col[k], Vec3(-(N.psi[k] * wr)));
-        }
+        if (stabilized) rk::scatter_residual(N, L, wr, add_force);
       };
       if (scatter.seam_row(L))
         contribute(scatter.sink(t, 0, L), scatter.sink(t, frank ? 1 : 0, L));

@@ -40,9 +40,7 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
       const rk::RowScatter::Links links = body.distributed() ? body.ghosts.scatter_links() : rk::RowScatter::Links{};
       scatter.plan_ordered(
           begin, end, n, threads, 1,
-          [&](Index J, int, const std::function<void(Index)>& emit) {
-            for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) emit(N.col[k]);
-          },
+          [&](Index J, int, const std::function<void(Index)>& emit) { rk::for_each_weight_column(N, J, emit); },
           body.distributed() ? &links : nullptr);
     }
   }
@@ -53,7 +51,7 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
     for (Index J = std::max(scatter.row_begin(t), begin); J < std::min(scatter.row_end(t), end); ++J) {
       const Vec3& fJ = f[J];
       const auto transfer = [&](const auto& add) {
-        for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) add(N.col[k], Vec3(N.psi[k] * fJ));
+        rk::for_each_weight(N, J, [&](Index I, double w) { add(I, Vec3(w * fJ)); });
       };
       // A row at a seam makes every contribution, zeros too (its plan counts them); the
       // others add in place and skip the many particles that carry no point force.

@@ -196,7 +196,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   const std::vector<ConstrainedComponent> constrained = constrained_components(spec, cloud);
 
   try {
-    body->rk = std::make_unique<rk::RKApproximation>(cloud, rk_settings(spec.rk));
+    body->rk_settings = rk_settings(spec.rk);
+    const rk::RKApproximation rk = approximation(*body);
     const auto scheme = integration_scheme(spec.rk);
     // Distributed: this rank builds the rows of the points it owns (and, of the
     // interpolation, those of the constrained particles too, whose small system every
@@ -210,8 +211,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
       interpolation_rows = own_rows;
       for (const auto& c : constrained) interpolation_rows[static_cast<std::size_t>(c.particle)] = 1;
     }
-    body->gradient = rk::build_gradient_operator(cloud, *body->rk, scheme, gradient_precision(spec.rk), own_rows);
-    body->interpolation = rk::build_nodal_interpolation(cloud, *body->rk, interpolation_rows);
+    body->gradient = rk::build_gradient_operator(cloud, rk, scheme, gradient_precision(spec.rk), own_rows);
+    body->interpolation = rk::build_nodal_interpolation(cloud, rk, interpolation_rows);
   } catch (const rk::ApproximationError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
   }
@@ -236,7 +237,6 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     body->v[i] = velocity;
     if (!kick.empty()) body->v[i] += kick[body->original_id.empty() ? i : static_cast<std::size_t>(body->original_id[i])];
   }
-  body->a.assign(n, Vec3::Zero());
   body->x.resize(n);
   body->force.assign(n, Vec3::Zero());
   body->F.assign(n, Mat3::Identity());

@@ -178,7 +178,10 @@ StateRecord checkpoint_record(const World& world, const Integrator& integrator, 
     r.put_integer(p + "particles", static_cast<std::int64_t>(b->size()));
     r.put_vectors(p + "d", b->d);
     r.put_vectors(p + "v", b->v);
-    r.put_vectors(p + "a", b->a);
+    // The forces of the step's evaluation, which the next half-kick reads as f / inertia:
+    // an LCE body's director has moved since, so forces recomputed at the restored state
+    // would differ in the last bits.
+    r.put_vectors(p + "force", b->force);
     r.put_reals(p + "inertia", b->inertia);
     if (b->director) r.put_vectors(p + "director", b->director->h);
     r.put_reals(p + "constraint_targets", b->constraints.targets());
@@ -253,16 +256,19 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       const std::string p = body_prefix(*b);
       b->d = r.vectors(p + "d", b->size());
       b->v = r.vectors(p + "v", b->size());
-      b->a = r.vectors(p + "a", b->size());
       b->inertia = r.reals(p + "inertia", b->size());
       if (b->director) b->director->h = r.vectors(p + "director", b->size());
       b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
       update_positions(*b);
     }
     for (std::size_t k = 0; k < world.terms.size(); ++k) world.terms[k]->load_state(r.record(term_prefix(k)));
-    // Forces, F and P at the restored state (deterministic: the same as when written).
+    // F and the terms' per-step quantities at the restored state (deterministic: the same
+    // as when written); the forces themselves as written (see save).
     compute_forces(world);
-    for (auto& b : world.bodies) b->constraints.transform_forces(b->force);
+    for (auto& b : world.bodies) {
+      b->constraints.transform_forces(b->force);
+      b->force = r.vectors(body_prefix(*b) + "force", b->size());
+    }
     integrator.load_state(r.record("integrator."));
   } catch (const StateError& e) {
     fail(e.what());

@@ -65,25 +65,16 @@ void Integrator::calibrate_stable_step() {
   if (f.omega_max > 0.0 && std::isfinite(wave)) calibration_ = 2.0 / f.omega_max / wave;
 }
 
-// Forces at the new positions (the bodies' internal forces, then every term's), the
+// Forces at the new positions (the bodies' internal forces, then every term's) and the
 // essential boundary conditions by the transformation method (its reactions' power
-// goes to the ledger), and the accelerations a = f / m with the lumped masses.
+// goes to the ledger). The accelerations are not stored: the kicks read f / inertia
+// (acceleration()), the same bits at a third of the memory traffic of an array.
 void Integrator::forces_and_accelerations() {
   compute_forces(world_);
   ++force_evaluations_;
   support_power_ = 0.0;
   for (auto& bp : world_.bodies) support_power_ += bp->constraints.transform_forces(bp->force);
-  accelerations();
   term_power_ = power_of_terms();
-}
-
-// a = f / inertia from the forces of the last evaluation.
-void Integrator::accelerations() {
-  for (auto& bp : world_.bodies) {
-    Body& b = *bp;
-#pragma omp parallel for schedule(static)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.a[i] = b.force[i] / b.inertia[i];
-  }
 }
 
 double Integrator::power_of_terms() const {
@@ -128,8 +119,7 @@ void Integrator::initialize() {
   forces_and_accelerations();
   unscaled_stable_dt_ = estimate_stable_dt();
   if (settings_.mode == Mode::Relax && settings_.mass_scaling) {
-    scale_masses();
-    accelerations();  // the forces do not depend on the masses
+    scale_masses();  // the forces do not depend on the masses; the accelerations follow
   }
   if (settings_.measured_stable_step) calibrate_stable_step();
   stable_dt_ = estimate_stable_dt();
@@ -224,7 +214,7 @@ void Integrator::first_kick_and_drift(StepBook& book) {
     Body& b = *bp;
 #pragma omp parallel for schedule(static) reduction(+ : damping_power)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
-      b.v[i] += 0.5 * h * (b.a[i] - c * b.v[i]);
+      b.v[i] += 0.5 * h * (acceleration(b, i) - c * b.v[i]);
       damping_power.add(c * b.inertia[i] * b.v[i].squaredNorm());
       b.d[i] += h * b.v[i];
     }
@@ -243,7 +233,7 @@ void Integrator::second_kick(double h) {
     Body& b = *bp;
     const double factor = 1.0 / (1.0 + 0.5 * c * h);
 #pragma omp parallel for schedule(static)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = factor * (b.v[i] + 0.5 * h * b.a[i]);
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = factor * (b.v[i] + 0.5 * h * acceleration(b, i));
     b.constraints.impose(b.d, b.v);
   }
 }
@@ -358,7 +348,7 @@ double Integrator::motion_limited_dt() const {
 #pragma omp parallel for schedule(static) reduction(min : dt)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       const double reach = kMotionFraction * b.spacing[i];
-      const double v = b.v[i].norm(), a = b.a[i].norm();
+      const double v = b.v[i].norm(), a = acceleration(b, i).norm();
       const double speed = v + std::sqrt(v * v + 2.0 * a * reach);
       if (speed > 0.0) dt = std::min(dt, 2.0 * reach / speed);
     }

@@ -22,13 +22,14 @@ void carry_body(const par::Comm& comm, const Body& from, Body& to) {
   const std::vector<Vec3> from_d = par::gather_owned(comm, from.d, from.owned_begin(), from.owned_end());
   const std::vector<Vec3> from_h =
       director ? par::gather_owned(comm, from.director->h, from.owned_begin(), from.owned_end()) : std::vector<Vec3>{};
+  const rk::RKApproximation from_rk = approximation(from);
   std::atomic<bool> failed{false};
 #pragma omp parallel
   {
     rk::ShapeValues sv;
 #pragma omp for schedule(dynamic, 256)
     for (Index J = to.owned_begin(); J < to.owned_end(); ++J) {
-      if (!from.rk->evaluate(to.cloud.X[J], sv, false)) {
+      if (!from_rk.evaluate(to.cloud.X[J], sv, false)) {
         failed = true;
         continue;
       }
@@ -49,7 +50,7 @@ void carry_body(const par::Comm& comm, const Body& from, Body& to) {
   if (comm.max(failed ? 1.0 : 0.0) > 0.0) {
     rk::ShapeValues sv;
     for (Index J = 0; J < static_cast<Index>(to.size()); ++J) try {
-        from.rk->evaluate_or_throw(to.cloud.X[J], sv, false,
+        from_rk.evaluate_or_throw(to.cloud.X[J], sv, false,
                                    fmt::format("particle {} of the finer cloud of body '{}'", J, to.name));
       } catch (const rk::ApproximationError& e) {
         throw SetupError(fmt::format("nested iteration: body '{}' ({} particles) cannot carry its state to the "

@@ -21,8 +21,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Bytes per particle of the run's state beyond the operators: X, d, v, a, x, force
-// (6 x 24), F per point (72; the stress is not stored), mass, inertia, volume, spacing, support radius,
+// Bytes per particle of the run's state beyond the operators: X, d, v, x, force
+// (5 x 24), F per point (72; the stress is not stored), mass, inertia, volume, spacing, support radius,
 // stabilization weight and residual, a surface term's quadrature, the kd-tree, the
 // director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up from the peaks measured at 1e6 particles
@@ -32,17 +32,17 @@ constexpr double kStateBytes = 1300.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
 // column and a vector of 24 bytes (double storage) or 12 (float), built in blocks that
 // are freed as they are joined (a margin of 12 for the blocks in flight and the
-// vectors' spare capacity); an interpolation entry is a column and a value (12), built
-// the same way.
+// vectors' spare capacity); an interpolation entry is a column and a float value (8),
+// built the same way.
 constexpr double kGradientEntryMargin = 12.0;
-constexpr double kInterpolationEntryBytes = 20.0;
+constexpr double kInterpolationEntryBytes = 16.0;
 // One frame, uncompressed: the position and 22 point-field components in doubles, the
 // cells (8 connectivity ids, an offset and a type per hexahedron, in 64-bit ids).
 constexpr double kFramePointBytes = 25.0 * 8.0;
 constexpr double kFrameElementBytes = 10.0 * 8.0 + 1.0;
 // What the process holds before any body: the libraries (VTK, OpenMP) and the scene.
 constexpr double kProcessBytes = 30e6;
-// A checkpoint: d, v, a and the director per particle, and the inertia.
+// A checkpoint: d, v, the force and the director per particle, and the inertia.
 constexpr double kCheckpointBytes = 4.0 * 24.0 + 8.0;
 // The address space a process maps before its arrays (libraries, thread stacks).
 constexpr double kAddressSpaceBaseline = 1.0e9;

@@ -131,7 +131,7 @@ TEST(Restart, ResumedRunEndsBitForBitLikeTheUninterruptedOne) {
   const RunResult second = run_file(scene_file, dir / "split", 40, dir / "step20.bin");
   ASSERT_EQ(second.code, kSuccess) << second.log;
 
-  // The checkpoints written at step 40 hold the whole dynamic state (d, v, a, the
+  // The checkpoints written at step 40 hold the whole dynamic state (d, v, the forces, the
   // directors, constraint targets, the integrator's ledger and FIRE state).
   const std::string a = read_text(dir / "whole" / "checkpoint.bin"), b = read_text(dir / "split" / "checkpoint.bin");
   std::printf("checkpoint at step 40: %zu bytes uninterrupted, %zu bytes resumed, identical: %s\n", a.size(), b.size(),

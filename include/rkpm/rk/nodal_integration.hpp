@@ -93,10 +93,18 @@ struct BoundaryQuadrature {
 
 // Shape-function values at the particles, Psi_I(X_J): maps the generalized
 // coordinates d_I to the physical displacement u(X_J) = sum_I Psi_I(X_J) d_I.
+//
+// The values are stored in single precision (8 bytes per entry with the column, against
+// 12) and every sum runs in double. A row is used in its relative form, like the
+// single-precision gradients: the own particle J takes the weight 1 - sum_k psi_k on top
+// of its stored value (own_weight), so each row is a partition of unity to double
+// round-off whatever the float rounding of psi. A uniform field is then reproduced
+// exactly and the stabilization residual of a rigid translation is zero; a linear field
+// is reproduced to the storage's rounding (about 1e-7 of the support radius).
 struct NodalInterpolation {
   std::vector<Index> row_offset;
   std::vector<Index> col;
-  std::vector<double> psi;
+  std::vector<float> psi;
 };
 
 // `rows` selects the rows to build (rows[L] != 0), for a rank of a distributed run that
@@ -119,13 +127,52 @@ BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, cons
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk,
                                              const std::vector<char>& rows = {});
 
+// The correction row J adds at its own particle: 1 - sum_k psi_k, summed in double (see
+// NodalInterpolation). A row that was not built (another rank's point) has none.
+inline double own_weight(const NodalInterpolation& N, Index J) {
+  const Index k0 = N.row_offset[J], k1 = N.row_offset[J + 1];
+  if (k0 == k1) return 0.0;
+  double sum = 0.0;
+  for (Index k = k0; k < k1; ++k) sum += static_cast<double>(N.psi[k]);
+  return 1.0 - sum;
+}
+
+// Row J's weights in the order every transposed product uses: add(I, w) for each entry,
+// then add(J, own_weight). Their sum is one to double round-off.
+template <class Add>
+void for_each_weight(const NodalInterpolation& N, Index J, const Add& add) {
+  const Index k0 = N.row_offset[J], k1 = N.row_offset[J + 1];
+  if (k0 == k1) return;
+  double sum = 0.0;
+  for (Index k = k0; k < k1; ++k) {
+    const double w = N.psi[k];
+    sum += w;
+    add(N.col[k], w);
+  }
+  add(J, 1.0 - sum);
+}
+
+// The particles for_each_weight visits for row J, in its order (an ordered
+// rk::RowScatter plans with it).
+template <class Emit>
+void for_each_weight_column(const NodalInterpolation& N, Index J, const Emit& emit) {
+  const Index k0 = N.row_offset[J], k1 = N.row_offset[J + 1];
+  if (k0 == k1) return;
+  for (Index k = k0; k < k1; ++k) emit(N.col[k]);
+  emit(J);
+}
+
 // sum_I Psi_I(X_J) v_I over row J: the field of the generalized values v at particle J
 // (physical displacement from d, physical velocity from v). The one interpolation
-// gather every per-point value uses.
+// gather every per-point value uses, in the relative form v_J + sum_k psi_k (v_k - v_J),
+// which equals the weights of for_each_weight and reproduces a uniform v exactly.
 inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v, Index J) {
+  const Index k0 = N.row_offset[J], k1 = N.row_offset[J + 1];
+  if (k0 == k1) return Vec3::Zero();
+  const Vec3 vJ = v[J];
   Vec3 s = Vec3::Zero();
-  for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) s += N.psi[k] * v[N.col[k]];
-  return s;
+  for (Index k = k0; k < k1; ++k) s += static_cast<double>(N.psi[k]) * (v[N.col[k]] - vJ);
+  return vJ + s;
 }
 
 // The row kernels, typed by the operator's storage `grad` (op.grad or op.grad_float): a

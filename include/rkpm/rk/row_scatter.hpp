@@ -36,6 +36,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -86,7 +87,7 @@ class RowScatter {
 
   // Thread t's buffer for one channel (one output field), indexed by column. Call
   // `clear` from thread t before adding into it.
-  Vec3* buffer(int t, int channel) { return buffers_[static_cast<std::size_t>(t * channels_ + channel)].data(); }
+  Vec3* buffer(int t, int channel) { return buffers_[static_cast<std::size_t>(t * channels_ + channel)].data.get(); }
   void clear(int t);
 
   // Where row L of thread t puts its contributions to one channel: sink(I, c) adds c
@@ -149,6 +150,7 @@ class RowScatter {
   Vec3 thread_sum(int channel, Index I) const;
   std::pair<Index, Index> reduce_block(int t) const;
   void split_rows(Index first_row, Index end_row);
+  void allocate_buffers(Index n_columns);
   bool seam(Index I) const { return !slot_.empty() && slot_[static_cast<std::size_t>(I)] >= 0; }
   void exchange_records(int channel);
   std::vector<char> lowest_reaching_rank(const std::vector<Index>& reached_by) const;
@@ -163,7 +165,21 @@ class RowScatter {
   Index n_columns_ = 0;
   std::vector<Index> row_begin_;              // threads + 1
   std::vector<Index> col_lo_, col_hi_;        // columns touched by each block: [lo, hi)
-  std::vector<std::vector<Vec3>> buffers_;    // threads x channels, n_columns each
+  // One thread's scratch for one channel. Left uninitialised (allocate_buffers says
+  // why); a copy is a fresh buffer of the same length, since the contents are scratch
+  // that `clear` resets before every pass.
+  struct Scratch {
+    std::unique_ptr<Vec3[]> data;
+    std::size_t size = 0;
+    explicit Scratch(std::size_t n) : data(new Vec3[n]), size(n) {}
+    Scratch(const Scratch& other) : Scratch(other.size) {}
+    Scratch& operator=(const Scratch& other) { return *this = Scratch(other.size); }
+    Scratch(Scratch&&) noexcept = default;
+    Scratch& operator=(Scratch&&) noexcept = default;
+    Vec3& operator[](std::size_t i) { return data[i]; }
+    const Vec3& operator[](std::size_t i) const { return data[i]; }
+  };
+  std::vector<Scratch> buffers_;              // threads x channels, n_columns each; valid in [col_lo, col_hi)
 
   // The ordered plan's seams.
   Index first_row_ = 0;

@@ -61,7 +61,10 @@ struct Body {
   particles::Cloud cloud;
   double density = 0.0;                // reference density rho0 [kg/m^3]
 
-  std::unique_ptr<rk::RKApproximation> rk;  // refers to cloud.X: a Body never moves
+  // The RK approximation is not kept: its kd-tree and supports (about 130 B per particle
+  // of a block) are needed only to build operators. approximation(body) rebuilds it, the
+  // same bits, for the terms that build operators of their own and for nested iteration.
+  rk::RKSettings rk_settings;
   rk::GradientOperator gradient;            // smoothed gradients b_I(X_L), weights V_L
   rk::NodalInterpolation interpolation;     // Psi_I(X_J)
   rk::Stabilization stabilization;          // removes the spurious modes of nodal integration
@@ -71,7 +74,7 @@ struct Body {
                                             // a relaxation scales it (scale_inertia)
   std::vector<double> spacing;              // shortest mesh edge at each particle [m]
 
-  std::vector<Vec3> d, v, a;                // generalized displacement, velocity, acceleration
+  std::vector<Vec3> d, v;                   // generalized displacement and velocity
   std::vector<Vec3> x;                      // X + d
   std::vector<Vec3> force;                  // total force of this step [N]
   std::vector<Mat3> F;                      // per integration point; the stress is not kept
@@ -103,6 +106,14 @@ struct Body {
 
 // x = X + d.
 void update_positions(Body& body);
+
+// a_I = f_I / inertia_I from the forces of the last evaluation (not stored: it is read
+// where the integrator needs it).
+inline Vec3 acceleration(const Body& body, Index I) { return body.force[I] / body.inertia[I]; }
+
+// The body's RK approximation over its reference cloud (kd-tree and supports), built
+// from body.rk_settings: the same on every call. It refers to body.cloud.X.
+rk::RKApproximation approximation(const Body& body);
 
 // The body's particles in their one-rank numbering (the identity on one rank): a sum over
 // every particle taken in this order has the same bits for any rank count, as the

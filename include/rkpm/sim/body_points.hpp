@@ -69,7 +69,7 @@ void add_point_forces(Body& body, const std::vector<Index>& particles, double sc
     plan_term_rows(scatter, body, first, end, 1, [&](Index i, int, const std::function<void(Index)>& emit) {
       const Index J = particles[static_cast<std::size_t>(i)];
       if (!rows) return emit(J);
-      for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) emit(N.col[k]);
+      rk::for_each_weight_column(N, J, emit);
     });
   scatter.clear(0);
   for (Index i = first; i < end; ++i) {
@@ -81,7 +81,7 @@ void add_point_forces(Body& body, const std::vector<Index>& particles, double sc
       sink(J, Vec3(scale * f));
       continue;
     }
-    for (Index k = N.row_offset[J]; k < N.row_offset[J + 1]; ++k) sink(N.col[k], Vec3((scale * N.psi[k]) * f));
+    rk::for_each_weight(N, J, [&](Index I, double w) { sink(I, Vec3((scale * w) * f)); });
   }
   add_term_rows(scatter, 0, 1.0, body.force);
 }

@@ -121,7 +121,6 @@ class Integrator {
   // The stages of step(), in order.
   void first_kick_and_drift(StepBook& book);
   void forces_and_accelerations();
-  void accelerations();
   void second_kick(double h);
   void fire(StepBook& book);
   void step_back(StepBook& book);

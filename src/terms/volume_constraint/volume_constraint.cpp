@@ -42,9 +42,10 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   Fold fold{std::vector<Vec3>(body.size(), Vec3::Zero()), std::vector<char>(body.size(), 0), {}};
   row_offset_.push_back(0);
   const particles::DualCells cells(body.cloud);
+  const rk::RKApproximation rk = approximation(body);
   const std::size_t boundary = body.cloud.boundary_particles.size();
   for (std::size_t first = 0; first < boundary; first += batch)
-    fold_facets(rk::build_boundary_quadrature(body.cloud, cells, *body.rk, surface_bit, first, first + batch), fold);
+    fold_facets(rk::build_boundary_quadrature(body.cloud, cells, rk, surface_bit, first, first + batch), fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));

@@ -18,7 +18,6 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   body->inertia = body->mass;
   body->d.assign(n, Vec3::Zero());
   body->v.assign(n, Vec3::Zero());
-  body->a.assign(n, Vec3::Zero());
   body->x = X;
   body->force.assign(n, Vec3::Zero());
   materials::MooneyRivlin mr;
