@@ -37,7 +37,7 @@ auto sum_over_bodies(const sim::World& world, Measure measure) {
 Footprint footprint(const sim::Body& b) {
   Footprint f;
   f.operators = gradient_bytes(b.gradient) + interpolation_bytes(b.interpolation);
-  f.state = bytes(b.d) + bytes(b.v) + bytes(b.x) + bytes(b.force) + bytes(b.F) +
+  f.state = bytes(b.d) + bytes(b.v) + bytes(b.force) + bytes(b.F) +
             bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) +
             material_bytes(b.material) + b.force_scatter.bytes() + b.point_force_scatter.bytes();
   if (b.director) {
@@ -60,8 +60,9 @@ Traffic internal_force_traffic(const sim::Body& b) {
   Traffic t;
   // F_L = sum_I x_I (x) b_I(X_L) and f_I = sum_L V_L P_L b_I(X_L): the operator's rows,
   // each array once. Scatter buffers are the kernel's own scratch, not compulsory traffic.
+  // F reads d (single storage, relative form) or X and d (double storage).
   t.operators = gradient_bytes(b.gradient);
-  t.state_read = bytes(b.x);
+  t.state_read = bytes(b.d) + (b.gradient.single_precision() ? 0 : bytes(b.cloud.X));
   t.state_written = bytes(b.F) + bytes(b.force);
   t.state_read += material_bytes(b.material);
   if (b.director) {

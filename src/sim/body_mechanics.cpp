@@ -17,19 +17,11 @@ const DirectorField* director_of(const Body& body) { return body.director ? &*bo
 
 rk::RKApproximation approximation(const Body& body) { return rk::RKApproximation(body.cloud, body.rk_settings); }
 
-void update_positions(Body& body) {
-  const auto n = static_cast<Index>(body.size());
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) body.x[i] = body.cloud.X[i] + body.d[i];
-}
-
 namespace {
-// The ghosts' current displacements, positions and (for the Frank term) directors,
-// from their owners.
+// The ghosts' current displacements and (for the Frank term) directors, from their
+// owners.
 void pull_ghosts(Body& body, DirectorField* dir) {
   body.ghosts.pull(body.d);
-  for (const auto& from_owner : body.ghosts.ghosts_by_owner())
-    for (Index g : from_owner) body.x[g] = body.cloud.X[g] + body.d[g];
   if (dir != nullptr) body.ghosts.pull(dir->h);
 }
 
@@ -85,7 +77,7 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
     scatter.clear(t);
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      const Mat3 F = rk::deformation_gradient(op, grad, body.x, body.d, L);
+      const Mat3 F = rk::deformation_gradient(op, grad, body.cloud.X, body.d, L);
       const Mat3 grad_h = frank ? rk::row_gradient(op, grad, dir->h, L) : Mat3::Zero();
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
@@ -179,11 +171,11 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals) {
   const auto& cloud = body.cloud;
   normals.assign(cloud.boundary_particles.size(), Vec3::Zero());
   for (const auto& face : cloud.boundary_faces) {
-    const Vec3* p[4];
-    for (int k = 0; k < face.n_nodes; ++k) p[k] = &body.x[face.nodes[k]];
+    Vec3 p[4];
+    for (int k = 0; k < face.n_nodes; ++k) p[k] = nodal_position(body, face.nodes[k]);
     // Area vector of the (possibly warped) face: half the cross product of its diagonals.
-    const Vec3 area = face.n_nodes == 3 ? Vec3(0.5 * (*p[1] - *p[0]).cross(*p[2] - *p[0]))
-                                        : Vec3(0.5 * (*p[2] - *p[0]).cross(*p[3] - *p[1]));
+    const Vec3 area = face.n_nodes == 3 ? Vec3(0.5 * (p[1] - p[0]).cross(p[2] - p[0]))
+                                        : Vec3(0.5 * (p[2] - p[0]).cross(p[3] - p[1]));
     for (int k = 0; k < face.n_nodes; ++k) normals[cloud.boundary_index[face.nodes[k]]] += area;
   }
   for (auto& n : normals) {

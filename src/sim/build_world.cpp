@@ -237,10 +237,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
     body->v[i] = velocity;
     if (!kick.empty()) body->v[i] += kick[body->original_id.empty() ? i : static_cast<std::size_t>(body->original_id[i])];
   }
-  body->x.resize(n);
   body->force.assign(n, Vec3::Zero());
   body->F.assign(n, Mat3::Identity());
-  update_positions(*body);
 
   // The director field first: a model that carries one (the LCE) builds on it.
   if (spec.director) body->director = make_director(spec, *body, warning);

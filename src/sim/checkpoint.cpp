@@ -259,7 +259,6 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       b->inertia = r.reals(p + "inertia", b->size());
       if (b->director) b->director->h = r.vectors(p + "director", b->size());
       b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
-      update_positions(*b);
     }
     for (std::size_t k = 0; k < world.terms.size(); ++k) world.terms[k]->load_state(r.record(term_prefix(k)));
     // F and the terms' per-step quantities at the restored state (deterministic: the same

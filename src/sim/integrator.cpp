@@ -102,10 +102,9 @@ void Integrator::initialize() {
   for (auto& bp : world_.bodies) {
     Body& b = *bp;
     b.constraints.impose(b.d, b.v);
-    update_positions(b);
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
-      lo = lo.cwiseMin(b.x[i]);
-      hi = hi.cwiseMax(b.x[i]);
+      lo = lo.cwiseMin(nodal_position(b, i));
+      hi = hi.cwiseMax(nodal_position(b, i));
     }
   }
   for (int c = 0; c < 3; ++c) {
@@ -219,7 +218,6 @@ void Integrator::first_kick_and_drift(StepBook& book) {
       b.d[i] += h * b.v[i];
     }
     b.constraints.advance(h, b.d, b.v);
-    update_positions(b);
   }
   book.damping_power = world_.comm->sum(damping_power);
 }
@@ -271,7 +269,6 @@ void Integrator::step_back(StepBook& book) {
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = b.d[i] - jump_[k][i];
   }
   const double power_before = power_of_terms();
-  for (auto& bp : world_.bodies) update_positions(*bp);
   forces_and_accelerations();
   const double power_after = power_of_terms();
   stop_bodies(world_);
@@ -399,13 +396,14 @@ void Integrator::check_state() {
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
       const double J = b.F[i].determinant();
       min_J = std::min(min_J, J);
-      const bool bad = !b.x[i].allFinite() || !b.v[i].allFinite() || !(J > 0.0) ||
-                       (b.x[i] - centre_).squaredNorm() > limit2;
+      const Vec3 x = nodal_position(b, i);
+      const bool bad = !x.allFinite() || !b.v[i].allFinite() || !(J > 0.0) || (x - centre_).squaredNorm() > limit2;
       if (bad) first = std::min(first, i);
     }
     if (first == std::numeric_limits<Index>::max()) continue;
     const double J = b.F[first].determinant();
-    const Reason why = !b.x[first].allFinite()   ? NonFinitePosition
+    const Vec3 x = nodal_position(b, first);
+    const Reason why = !x.allFinite()            ? NonFinitePosition
                        : !b.v[first].allFinite() ? NonFiniteVelocity
                        : !(J > 0.0)              ? Inverted
                                                  : Runaway;
@@ -419,8 +417,7 @@ void Integrator::check_state() {
         "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
         "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "
         "The stable step estimate is {:.3g} s.",
-        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), b.x[first].x(), b.x[first].y(),
-        b.x[first].z(), what[why], J, b.v[first].norm(), stable_dt_);
+        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), what[why], J, b.v[first].norm(), stable_dt_);
     break;
   }
   diagnosis = world_.comm->first_error(diagnosis);

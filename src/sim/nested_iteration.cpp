@@ -59,7 +59,6 @@ void carry_body(const par::Comm& comm, const Body& from, Body& to) {
       }
   }
   to.constraints.impose(to.d, to.v);
-  update_positions(to);
 }
 
 }  // namespace

@@ -14,7 +14,6 @@ namespace {
 // The forces of every body at its present displacement, transformed by its essential
 // boundary conditions: what the integrator's force stage leaves in Body::force.
 void transformed_forces(World& world) {
-  for (auto& bp : world.bodies) update_positions(*bp);
   compute_forces(world);
   for (auto& bp : world.bodies) bp->constraints.transform_forces(bp->force);
 }

@@ -151,7 +151,6 @@ void deform(Body& b, double amplitude = 1.0) {
   for (double v : b.cloud.volume) volume += v;
   const double h = std::cbrt(volume / static_cast<double>(b.size()));
   for (std::size_t i = 0; i < b.size(); ++i) b.d[i] = A * b.cloud.X[i] + 0.05 * amplitude * h * noise(original(b, i), 1);
-  update_positions(b);
   if (b.director)
     for (std::size_t i = 0; i < b.size(); ++i)
       b.director->h[i] = (b.director->h[i] + 0.2 * noise(original(b, i), 2)).normalized();
@@ -162,7 +161,7 @@ void poison_unowned(Body& b) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
     if (i < b.owned_begin() || i >= b.owned_end()) {
-      b.d[i] = b.x[i] = Vec3::Constant(nan);
+      b.d[i] = Vec3::Constant(nan);
       if (b.director) b.director->h[i] = Vec3::Constant(nan);
     }
 }

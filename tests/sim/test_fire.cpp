@@ -22,7 +22,7 @@ std::unique_ptr<World> point_masses(std::size_t n, double mass = 1.0) {
   b->cloud.X.assign(n, Vec3::Zero());
   b->mass.assign(n, mass);
   b->inertia = b->mass;
-  for (auto* field : {&b->d, &b->v, &b->x, &b->force}) field->assign(n, Vec3::Zero());
+  for (auto* field : {&b->d, &b->v, &b->force}) field->assign(n, Vec3::Zero());
   world->bodies.push_back(std::move(b));
   return world;
 }

@@ -58,7 +58,6 @@ void deform(Body& b) {
   const double h = std::cbrt(b.cloud.volume[0]);
   for (std::size_t i = 0; i < b.size(); ++i)
     b.d[i] = A * b.cloud.X[i] + 0.05 * h * Vec3(u(rng), u(rng), u(rng));
-  update_positions(b);
   if (b.director)
     for (auto& hv : b.director->h) hv = (hv + 0.2 * Vec3(u(rng), u(rng), u(rng))).normalized();
 }
@@ -72,7 +71,9 @@ struct Reference {
 Reference unfused(Body& b) {
   Reference r;
   std::vector<Mat3> F, grad_h, P(b.size()), flux(b.size());
-  rk::deformation_gradients(b.gradient, b.x, F);
+  std::vector<Vec3> x(b.size());
+  for (std::size_t I = 0; I < b.size(); ++I) x[I] = nodal_position(b, static_cast<Index>(I));
+  rk::deformation_gradients(b.gradient, x, F);
   const auto* lce = std::get_if<materials::lce::BodyMaterial>(&b.material);
   if (lce) rk::deformation_gradients(b.gradient, b.director->h, grad_h);
   for (std::size_t L = 0; L < b.size(); ++L) {

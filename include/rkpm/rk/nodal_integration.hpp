@@ -182,25 +182,27 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
 // The row loops below read the operator through raw pointers and accumulate in locals:
 // with the vectors' members and a Mat3 in memory, the compiler must assume each store
 // may alias them and reloads them per entry, which cost a third of the force pass.
-template <class Stored>
-Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
+//
+// value(I) gives the field at particle I: a stored array (row_gradient) or a sum formed
+// on the fly (the positions X_I + d_I, which are not stored).
+template <class Stored, class Value>
+Mat3 row_gradient_of(const GradientOperator& op, const std::vector<Stored>& grad, const Value& value, Index L) {
   const Index* col = op.col.data();
   const Stored* b = grad.data();
-  const Vec3* vp = v.data();
   const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
   // g = sum_k v_k b_k^T, one column per component of b.
   Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
   if constexpr (std::is_same_v<Stored, Vec3>) {
     for (Index k = k0; k < k1; ++k) {
-      const Vec3 vk = vp[col[k]];
+      const Vec3 vk = value(col[k]);
       g0 += vk * b[k](0);
       g1 += vk * b[k](1);
       g2 += vk * b[k](2);
     }
   } else {
-    const Vec3 vL = vp[L];
+    const Vec3 vL = value(L);
     for (Index k = k0; k < k1; ++k) {
-      const Vec3 vk = vp[col[k]] - vL;
+      const Vec3 vk = value(col[k]) - vL;
       g0 += vk * static_cast<double>(b[k](0));
       g1 += vk * static_cast<double>(b[k](1));
       g2 += vk * static_cast<double>(b[k](2));
@@ -209,6 +211,12 @@ Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, c
   Mat3 g;
   g << g0, g1, g2;
   return g;
+}
+
+template <class Stored>
+Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
+  const Vec3* vp = v.data();
+  return row_gradient_of(op, grad, [vp](Index I) { return vp[I]; }, L);
 }
 
 // Row L's contributions w M b_I(X_L), handed to add(I, c) in the row's order: its
@@ -248,13 +256,18 @@ void scatter_columns(const GradientOperator& op, Index L, const Emit& emit) {
 }
 
 // F_L in the form the storage needs (see deformation_gradient below).
+// Double storage gathers the positions X + d (formed per entry, the same bits as a
+// stored sum); single storage gathers d in the relative form and adds I.
 template <class Stored>
-Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& x,
+Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& X,
                           const std::vector<Vec3>& d, Index L) {
-  if constexpr (std::is_same_v<Stored, Vec3>)
-    return row_gradient(op, grad, x, L);
-  else
+  if constexpr (std::is_same_v<Stored, Vec3>) {
+    const Vec3* Xp = X.data();
+    const Vec3* dp = d.data();
+    return row_gradient_of(op, grad, [Xp, dp](Index I) { return Vec3(Xp[I] + dp[I]); }, L);
+  } else {
     return Mat3::Identity() + row_gradient(op, grad, d, L);
+  }
 }
 
 // sum_I v_I (x) b_I(X_L) over row L: Grad_X h from directors, dF/dt from velocities,
@@ -288,12 +301,13 @@ void for_each_acting_entry(const GradientOperator& op, Index L, Entry entry) {
   if (op.single_precision()) entry(L, Vec3(-row_sum));
 }
 
-// F_L of a body with positions x = X + d: sum_I x_I (x) b_I(X_L) in double storage;
-// I + sum_I (d_I - d_L) (x) b~_I in single precision, exact at rest.
-inline Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Vec3>& x, const std::vector<Vec3>& d,
+// F_L of a body with reference positions X and displacements d: sum_I (X_I + d_I) (x)
+// b_I(X_L) in double storage; I + sum_I (d_I - d_L) (x) b~_I in single precision, exact
+// at rest.
+inline Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Vec3>& X, const std::vector<Vec3>& d,
                                  Index L) {
-  return op.single_precision() ? deformation_gradient(op, op.grad_float, x, d, L)
-                               : deformation_gradient(op, op.grad, x, d, L);
+  return op.single_precision() ? deformation_gradient(op, op.grad_float, X, d, L)
+                               : deformation_gradient(op, op.grad, X, d, L);
 }
 
 // F_L = sum_I x_I (x) b_I(X_L) for every row; x are current positions (X + d).

@@ -75,7 +75,8 @@ struct Body {
   std::vector<double> spacing;              // shortest mesh edge at each particle [m]
 
   std::vector<Vec3> d, v;                   // generalized displacement and velocity
-  std::vector<Vec3> x;                      // X + d
+                                            // (the nodal position X + d is not stored:
+                                            // nodal_position recomputes it, the same bits)
   std::vector<Vec3> force;                  // total force of this step [N]
   std::vector<Mat3> F;                      // per integration point; the stress is not kept
                                             // (first_piola_at recomputes it for output)
@@ -104,8 +105,9 @@ struct Body {
   std::size_t size() const { return cloud.size(); }
 };
 
-// x = X + d.
-void update_positions(Body& body);
+// x_I = X_I + d_I, the nodal (generalized) position; the particle's physical position is
+// physical_point.
+inline Vec3 nodal_position(const Body& body, Index I) { return body.cloud.X[I] + body.d[I]; }
 
 // a_I = f_I / inertia_I from the forces of the last evaluation (not stored: it is read
 // where the integrator needs it).
@@ -143,7 +145,7 @@ void physical_displacement(const Body& body, std::vector<Vec3>& u);
 // Physical position p_J = X_J + u(X_J) of one particle (X + d for a body without RK
 // operators, as in some tests): where contact and surface terms act.
 inline Vec3 physical_point(const Body& body, Index J) {
-  if (body.interpolation.row_offset.empty()) return body.x[J];
+  if (body.interpolation.row_offset.empty()) return nodal_position(body, J);
   return body.cloud.X[J] + rk::interpolate(body.interpolation, body.d, J);
 }
 

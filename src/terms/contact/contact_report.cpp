@@ -65,7 +65,7 @@ ContactSample ContactReport::measure() const {
   ContactSample s;
   double mass = 0.0;
   for (Index i = cell_.owned_begin(); i < cell_.owned_end(); ++i) {
-    s.centroid += cell_.mass[i] * cell_.x[i];
+    s.centroid += cell_.mass[i] * nodal_position(cell_, i);
     mass += cell_.mass[i];
   }
   for (int c = 0; c < 3; ++c) s.centroid[c] = comm_.sum(s.centroid[c]);

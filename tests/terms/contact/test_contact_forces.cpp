@@ -68,12 +68,12 @@ TEST(ContactForces, AreMinusTheGradientOfTheEnergy) {
       if (!at_interface) continue;
       for (int k = 0; k < 3; ++k) {
         const double h = 1e-6;
-        const double x0 = body->x[i][k];
-        body->x[i][k] = x0 + h;
+        const double d0 = body->d[i][k];
+        body->d[i][k] = d0 + h;
         const double e_plus = t.energy();
-        body->x[i][k] = x0 - h;
+        body->d[i][k] = d0 - h;
         const double e_minus = t.energy();
-        body->x[i][k] = x0;
+        body->d[i][k] = d0;
         worst = std::max(worst, std::abs(-(e_plus - e_minus) / (2.0 * h) - f[i][k]));
         scale = std::max(scale, std::abs(f[i][k]));
       }
@@ -91,9 +91,9 @@ TEST(ContactForces, CancelInTotalForceAndTorque) {
   for (auto* b : {t.lower.get(), t.upper.get()})
     for (std::size_t i = 0; i < b->size(); ++i) {
       force += b->force[i];
-      torque += b->x[i].cross(b->force[i]);
+      torque += nodal_position(*b, i).cross(b->force[i]);
       magnitude = std::max(magnitude, b->force[i].norm());
-      arm = std::max(arm, b->x[i].norm());
+      arm = std::max(arm, nodal_position(*b, i).norm());
     }
   Vec3 on_upper = Vec3::Zero();
   for (const auto& f : t.upper->force) on_upper += f;
@@ -176,11 +176,11 @@ TEST(ContactStableStep, IsTheCriticalStepOfThePairSpring) {
     for (int step = 0; step < 400; ++step) {
       for (auto* p : {a.get(), b.get()}) {
         p->v[0] += 0.5 * dt * p->force[0] / m;
-        p->x[0] += dt * p->v[0];
+        p->d[0] += dt * p->v[0];
       }
       forces();
       for (auto* p : {a.get(), b.get()}) p->v[0] += 0.5 * dt * p->force[0] / m;
-      amplitude = std::max(amplitude, std::abs((b->x[0] - a->x[0]).norm() - s0));
+      amplitude = std::max(amplitude, std::abs((nodal_position(*b, 0) - nodal_position(*a, 0)).norm() - s0));
     }
   };
   double stable_amp = 0.0, unstable_amp = 0.0, estimate = 0.0;

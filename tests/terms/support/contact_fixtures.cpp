@@ -18,7 +18,6 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   body->inertia = body->mass;
   body->d.assign(n, Vec3::Zero());
   body->v.assign(n, Vec3::Zero());
-  body->x = X;
   body->force.assign(n, Vec3::Zero());
   materials::MooneyRivlin mr;
   mr.c1 = 400.0;
@@ -28,10 +27,7 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   return body;
 }
 
-void move_to(Body& body, const std::vector<Vec3>& d) {
-  body.d = d;
-  for (std::size_t i = 0; i < body.size(); ++i) body.x[i] = body.cloud.X[i] + d[i];
-}
+void move_to(Body& body, const std::vector<Vec3>& d) { body.d = d; }
 
 BuiltWorld world_from_text(const std::string& toml) {
   BuiltWorld w;

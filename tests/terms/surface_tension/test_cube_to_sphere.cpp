@@ -79,7 +79,7 @@ Shape measure(const Body& body) {
   double mass = 0.0;
   for (std::size_t i = 0; i < body.size(); ++i) {
     p[i] += body.cloud.X[i];
-    centre += body.mass[i] * body.x[i];
+    centre += body.mass[i] * nodal_position(body, static_cast<Index>(i));
     mass += body.mass[i];
   }
   centre /= mass;

@@ -45,12 +45,12 @@ TEST(SurfaceTension, ForceIsMinusGammaTimesTheAreaGradient) {
   double worst = 0.0, scale = 0.0;
   for (Index i : body->cloud.boundary_particles)
     for (int k = 0; k < 3; ++k) {
-      const double h = 1e-6, x0 = body->x[i][k];
-      body->x[i][k] = x0 + h;
+      const double h = 1e-6, d0 = body->d[i][k];
+      body->d[i][k] = d0 + h;
       const double e_plus = gamma * tension.measure_area();
-      body->x[i][k] = x0 - h;
+      body->d[i][k] = d0 - h;
       const double e_minus = gamma * tension.measure_area();
-      body->x[i][k] = x0;
+      body->d[i][k] = d0;
       worst = std::max(worst, std::abs(-(e_plus - e_minus) / (2.0 * h) - f[i][k]));
       scale = std::max(scale, std::abs(f[i][k]));
     }
@@ -58,7 +58,7 @@ TEST(SurfaceTension, ForceIsMinusGammaTimesTheAreaGradient) {
   Vec3 total = Vec3::Zero(), torque = Vec3::Zero();
   for (std::size_t i = 0; i < body->size(); ++i) {
     total += f[i];
-    torque += body->x[i].cross(f[i]);
+    torque += nodal_position(*body, static_cast<Index>(i)).cross(f[i]);
   }
   std::printf("area %.6f; largest |f + dE/dx| %.2e of %.2e; |sum f| %.1e, |sum x x f| %.1e\n", tension.area(), worst,
               scale, total.norm(), torque.norm());

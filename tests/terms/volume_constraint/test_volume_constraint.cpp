@@ -56,7 +56,6 @@ VolumeConstraint& constraint_of(World& w) {
 // Forces of the term alone at the body's current d.
 std::vector<Vec3> term_forces(World& w) {
   Body& b = *w.bodies.front();
-  update_positions(b);
   compute_internal_forces(b);  // F at the current d: the term reads it
   std::fill(b.force.begin(), b.force.end(), Vec3::Zero());
   constraint_of(w).add_forces(w);
