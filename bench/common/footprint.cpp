@@ -76,9 +76,9 @@ Traffic internal_force_traffic(const sim::Body& b) {
     }
   }
   if (b.stabilization.active()) {
-    // r = (I - N) d, then f -= (I - N)^T W r, both from the rows of N.
+    // r = (I - N) d, then f -= (I - N)^T W r, both from the rows of N; d is counted
+    // once, with F's gather.
     t.operators += interpolation_bytes(b.interpolation) + bytes(b.stabilization.weight);
-    t.state_read += bytes(b.d);
   }
   return t;
 }
