@@ -14,8 +14,8 @@
 namespace rkpm::bench {
 
 struct Footprint {
-  std::size_t operators = 0;  // gradient, interpolation (with their transposes if stored), boundary quadrature
-  std::size_t state = 0;      // per particle and point: d v a x force F P, masses, director, material, scratch
+  std::size_t operators = 0;  // gradient and interpolation operators (no transposes are stored)
+  std::size_t state = 0;      // per particle and point: d v force F, masses, director, material, scratch
   std::size_t cloud = 0;      // reference cloud: positions, volumes, mesh, boundary description
   std::size_t total() const { return operators + state + cloud; }
   Footprint& operator+=(const Footprint& o) {

@@ -397,7 +397,7 @@ void deformation_gradients(const GradientOperator& op, const std::vector<Vec3>& 
 }
 
 void internal_forces(const GradientOperator& op, const std::vector<Mat3>& P, std::vector<Vec3>& f) {
-  const int threads = omp_get_max_threads();
+  const int threads = RowScatter::team_threads();
   RowScatter scatter;
   scatter.plan(op.n_rows(), op.n_columns, {{&op.row_offset, &op.col}}, threads, 1);
   f.resize(static_cast<std::size_t>(op.n_columns));

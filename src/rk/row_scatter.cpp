@@ -226,6 +226,8 @@ void RowScatter::allocate_buffers(Index n_columns) {
   for (int b = 0; b < threads_ * channels_; ++b) buffers_.emplace_back(static_cast<std::size_t>(n_columns));
 }
 
+int RowScatter::team_threads() { return std::max(1, std::min(omp_get_max_threads(), omp_get_thread_limit())); }
+
 void RowScatter::clear(int t) {
   const auto lo = col_lo_[static_cast<std::size_t>(t)], hi = col_hi_[static_cast<std::size_t>(t)];
   for (int c = 0; c < channels_; ++c) std::fill(buffer(t, c) + lo, buffer(t, c) + hi, Vec3::Zero());

@@ -19,7 +19,7 @@ Stabilization build_stabilization(const std::vector<double>& volume, const std::
 double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, const std::vector<Vec3>& d,
                                 std::vector<Vec3>& f) {
   const auto n = static_cast<Index>(s.weight.size());
-  const int threads = omp_get_max_threads();
+  const int threads = RowScatter::team_threads();
   if (!s.scatter.planned_for(threads)) s.scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);
   std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
   // r_L = d_L - sum_I Psi_I(X_L) d_I, pre-multiplied by W_L; then f -= the transpose

@@ -45,7 +45,7 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
   auto& stab = body.stabilization;
   const bool stabilized = stab.active();
   const bool frank = dir != nullptr && dir->frank;
-  const int threads = omp_get_max_threads();
+  const int threads = rk::RowScatter::team_threads();
   auto& scatter = body.force_scatter;
   if (!scatter.planned_for(threads)) {
     const int channels = frank ? 2 : 1;

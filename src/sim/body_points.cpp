@@ -32,7 +32,7 @@ void add_point_forces(Body& body, const std::vector<Vec3>& f) {
   // the owned rows' transfer lands on owned particles and ghosts alike; the ghosts'
   // part goes to the owners as records.
   auto& scatter = body.point_force_scatter;
-  const int threads = omp_get_max_threads();
+  const int threads = rk::RowScatter::team_threads();
   if (!scatter.planned_for(threads)) {
     if (threads == 1 && !body.distributed()) {
       scatter.plan(n, n, {{&N.row_offset, &N.col}}, threads, 1);

@@ -69,7 +69,7 @@ void Integrator::calibrate_stable_step() {
 // essential boundary conditions by the transformation method (its reactions' power
 // goes to the ledger). The accelerations are not stored: the kicks read f / inertia
 // (acceleration()), the same bits at a third of the memory traffic of an array.
-void Integrator::forces_and_accelerations() {
+void Integrator::evaluate_forces() {
   compute_forces(world_);
   ++force_evaluations_;
   support_power_ = 0.0;
@@ -115,7 +115,7 @@ void Integrator::initialize() {
   if (settings_.domain_size <= 0.0) settings_.domain_size = 50.0 * (hi - lo).norm();
 
   for (auto& bp : world_.bodies) bp->inertia = bp->mass;
-  forces_and_accelerations();
+  evaluate_forces();
   unscaled_stable_dt_ = estimate_stable_dt();
   if (settings_.mode == Mode::Relax && settings_.mass_scaling) {
     scale_masses();  // the forces do not depend on the masses; the accelerations follow
@@ -187,7 +187,7 @@ void Integrator::step() {
   book.director_energy.clear();
 
   first_kick_and_drift(book);
-  forces_and_accelerations();
+  evaluate_forces();
   second_kick(book.h);
   book.kinetic_of_motion = kinetic_energy(world_);
   if (settings_.mode == Mode::Relax) fire(book);
@@ -269,7 +269,7 @@ void Integrator::step_back(StepBook& book) {
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.v[i] = b.d[i] - jump_[k][i];
   }
   const double power_before = power_of_terms();
-  forces_and_accelerations();
+  evaluate_forces();
   const double power_after = power_of_terms();
   stop_bodies(world_);
   const double work = 0.5 * (power_before + power_after);

@@ -21,13 +21,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Bytes per particle of the run's state beyond the operators: X, d, v, x, force
-// (5 x 24), F per point (72; the stress is not stored), mass, inertia, volume, spacing, support radius,
-// stabilization weight and residual, a surface term's quadrature, the kd-tree, the
+// Bytes per particle of the run's state beyond the operators: X, d, v, force (4 x 24),
+// F per point (72; the stress, positions and accelerations are not stored), mass,
+// inertia, volume, spacing, stabilization weight, a surface term's quadrature, the
+// set-up's kd-tree and support radii (freed before the run, but part of the peak), the
 // director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up from the peaks measured at 1e6 particles
-// beyond the operators: block 678, sphere 933, RBC shell 1,235 bytes per particle
-// (docs/performance.md).
+// beyond the operators when the state held more (block 678, sphere 933, RBC shell
+// 1,235 bytes per particle, docs/performance.md); kept as a margin.
 constexpr double kStateBytes = 1300.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
 // column and a vector of 24 bytes (double storage) or 12 (float), built in blocks that

@@ -4,6 +4,7 @@
 #include "rkpm/io/progress.hpp"
 #include "rkpm/io/pvd_series.hpp"
 #include "rkpm/io/run_summary.hpp"
+#include "rkpm/rk/row_scatter.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/checkpoint.hpp"
 #include "rkpm/sim/history.hpp"
@@ -339,7 +340,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   summary.frames_written = series->frames_written();
   summary.status = status;
   io::Json json = io::to_json(summary);
-  json.set("threads", omp_get_max_threads());
+  json.set("threads", rk::RowScatter::team_threads());
   json.set("ranks", comm.size());
   if (comm.parallel()) json.set("distribution", distribution_json(*world));
   json.set("dt", integrator.dt());

@@ -80,6 +80,11 @@ class RowScatter {
   void plan_ordered(Index first_row, Index end_row, Index n_columns, int threads, int channels,
                     const RowColumns& columns, const Links* links = nullptr);
 
+  // The threads a `#pragma omp parallel num_threads(n)` region of a scatter's user will
+  // get: omp_get_max_threads() capped by OMP_THREAD_LIMIT (a team smaller than the plan
+  // would leave rows undone). Plan with this and open the region with it.
+  static int team_threads();
+
   bool planned_for(int threads) const { return threads_ == threads; }
   int threads() const { return threads_; }
   Index row_begin(int t) const { return row_begin_[static_cast<std::size_t>(t)]; }

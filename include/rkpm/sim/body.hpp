@@ -4,8 +4,9 @@
 // State is stored as flat arrays per particle. The kinematic unknowns are the
 // generalized displacements d_I of the RK approximation; the physical displacement
 // at a particle is u(X_J) = sum_I Psi_I(X_J) d_I (see `physical_displacement`).
-// x_I = X_I + d_I are the generalized positions the force loop and the surface
-// terms use: for smooth fields they differ from X_J + u(X_J) by O(h^2).
+// x_I = X_I + d_I, the generalized (nodal) positions, are not stored: nodal_position
+// forms them where they are read. The surface and contact terms act at the physical
+// points X_J + u(X_J) (physical_point), which differ from x_J by O(h^2) for smooth fields.
 #pragma once
 
 #include "rkpm/common/types.hpp"

@@ -120,7 +120,7 @@ class Integrator {
 
   // The stages of step(), in order.
   void first_kick_and_drift(StepBook& book);
-  void forces_and_accelerations();
+  void evaluate_forces();
   void second_kick(double h);
   void fire(StepBook& book);
   void step_back(StepBook& book);
