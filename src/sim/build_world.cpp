@@ -333,6 +333,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.relax_force_tol = p.real("relax_force_tol");
   s.relax_velocity_tol = p.real("relax_velocity_tol");
   s.mass_scaling = p.flag("mass_scaling");
+  s.contact_mass_scaling = p.flag("contact_mass_scaling");
   s.fire = FireParameters::named(p.choice("relax_method"));
   s.measured_stable_step = p.choice("stable_step") == "measured";
   return s;

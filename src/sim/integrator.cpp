@@ -121,6 +121,7 @@ void Integrator::initialize() {
     scale_masses();  // the forces do not depend on the masses; the accelerations follow
   }
   if (settings_.measured_stable_step) calibrate_stable_step();
+  scale_inertia_for_terms();
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
   if (settings_.dt > 0.0) {
@@ -153,6 +154,20 @@ void Integrator::initialize() {
 // at the start, so at most half the particles get heavier and the step is no longer set
 // by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
 // The median of an even count is the upper middle value: deterministic, no averaging.
+// contact_mass_scaling: a stiff contact would hold the whole relaxation at its own
+// step (its Gershgorin bound); its particles get heavier instead, until its limit
+// reaches about the bodies' own step. The equilibrium does not depend on the masses.
+// The velocities are kept, so the kinetic energy grows with the inertia; the ledger
+// books that growth as negative dissipation (FIRE, the run's one sink, removes it
+// again), and its balance holds.
+void Integrator::scale_inertia_for_terms() {
+  if (settings_.mode != Mode::Relax || !settings_.contact_mass_scaling) return;
+  const double bodies_dt = calibration_ * bodies_wave_dt();
+  const double kinetic_before = kinetic_energy(world_);
+  for (auto& t : world_.terms) t->scale_inertia_to(world_, bodies_dt);
+  ledger_.dissipated -= kinetic_energy(world_) - kinetic_before;
+}
+
 void Integrator::scale_masses() {
   std::vector<std::vector<double>> steps(world_.bodies.size());
   std::vector<double> all;
@@ -318,6 +333,7 @@ void Integrator::step_size_policy() {
   if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   if (world_.step % 10 != 0) return;
   if (settings_.measured_stable_step && world_.step % kCalibrateEvery == 0) calibrate_stable_step();
+  scale_inertia_for_terms();
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;
   if (settings_.dt > 0.0 && !dt_clamped_) {

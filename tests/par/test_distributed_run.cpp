@@ -173,9 +173,9 @@ TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
 
 // The red-blood-cell example on a coarse cloud: the active LCE shell (director evolution
 // with anchoring, the Frank term), its enclosed fluid (volume constraint), the faces'
-// wall contact (its reach widened so that pairs are in contact within the run), the
-// shape report, and FIRE relaxation from a nested level at half the resolution; 300
-// steps on the level and 300 on the shell itself.
+// wall contact (its reach widened so that pairs are in contact within the run) with the
+// example's contact mass scaling, the shape report, and FIRE relaxation from a nested
+// level at half the resolution; 300 steps on the level and 300 on the shell itself.
 TEST(DistributedRun, RedBloodCellSceneOnACoarseCloudFollowsTheOneRankPath) {
   const fs::path dir = shared_dir("rbc_coarse");
   std::string text = read_text(fs::path(RKPM_SOURCE_DIR) / "examples/rbc/rbc.toml");
@@ -190,6 +190,12 @@ TEST(DistributedRun, RedBloodCellSceneOnACoarseCloudFollowsTheOneRankPath) {
   EXPECT_EQ(error, 0.0);
   EXPECT_GT(std::stoi(summary_value(dir / "one", "active_pairs")), 0);
   EXPECT_EQ(summary_value(dir / "one", "active_pairs"), summary_value(dir / "two", "active_pairs"));
+  // The example's contact_mass_scaling made the pressed particles heavier on every rank
+  // alike (each holds every surface point and pair: the one-process inertia).
+  EXPECT_GT(std::stoi(summary_value(dir / "one", "heavier_particles")), 0);
+  EXPECT_EQ(summary_value(dir / "one", "heavier_particles"), summary_value(dir / "two", "heavier_particles"));
+  EXPECT_EQ(summary_value(dir / "one", "largest_inertia_over_mass"),
+            summary_value(dir / "two", "largest_inertia_over_mass"));
   // Summed exactly over the ranks' cells, gathered from the ranks' particles: the same bits.
   for (const std::string key : {"volume_ratio", "h_min_over_h_max"})
     EXPECT_EQ(std::stod(summary_value(dir / "two", key)), std::stod(summary_value(dir / "one", key))) << key;

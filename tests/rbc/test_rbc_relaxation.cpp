@@ -29,6 +29,7 @@ name = "rbc_coarse"
 mode = "relax"
 relax_force_tol = 1e-4
 relax_velocity_tol = 1e-8
+contact_mass_scaling = true
 [[body]]
 name = "cell"
 density = 1000.0

@@ -27,6 +27,7 @@ struct IntegratorSettings {
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
   FireParameters fire;           // relax only: the FIRE variant (fire.hpp)
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
+  bool contact_mass_scaling = false;  // relax only: terms raise their particles' inertia to the bodies' step (Term::scale_inertia_to)
   bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
@@ -134,6 +135,7 @@ class Integrator {
   double mode_step_limit() const;
   void calibrate_stable_step();
   void scale_masses();
+  void scale_inertia_for_terms();
   double damping() const;
   double stored_energy();
   double power_of_terms() const;

@@ -33,6 +33,11 @@ class Term {
   virtual double power(const World&) const { return 0.0; }
   // Largest stable time step this term allows (stiff contact, etc.).
   virtual double stable_dt(const World&) const { return std::numeric_limits<double>::infinity(); }
+  // Relaxation only, where the masses are free (contact_mass_scaling): raises the
+  // inertia of the particles this term stiffens until its stable_dt reaches about `dt`;
+  // the velocities stay as they are. A term without a stiffness of its own leaves the
+  // inertia alone.
+  virtual void scale_inertia_to(World&, double /*dt*/) {}
   // The term runs on more than one rank (its forces at the owned particles, its energy,
   // power and limits reduced over the ranks). A scene with a term that does not is
   // refused on more than one rank with a message naming it.

@@ -41,6 +41,9 @@ class WallContact final : public Term {
   double stored_energy(const World&) const override { return energy_; }
   // Gershgorin bound as for the contact term, over the pairs listed within s0 + skin.
   double stable_dt(const World&) const override;
+  // The particles whose row exceeds the bound of `dt` get heavier, in a few passes (a
+  // partner that gets heavier too lowers the row further); see Term::scale_inertia_to.
+  void scale_inertia_to(World&, double dt) override;
   void report(const World&, io::Json& summary) const override;
   bool distributed() const override { return true; }
 
@@ -58,6 +61,9 @@ class WallContact final : public Term {
   // Pair energy scale A_I A_J p0 / s0 [J]; the energy is that times (s0/r)^12 - 2 (s0/r)^6 + 1.
   double pair_energy_scale(Index i, Index j) const { return area_[i] * area_[j] * pressure_ / lj_.s0; }
   bool excluded(Index i, Index j) const;
+  // Gershgorin row of surface particle i, sum over its listed pairs of k_ij (1 / m_i +
+  // 1 / sqrt(m_i m_j)) with the stiffness at min(r, s0): omega^2 of the row [1/s^2].
+  double gershgorin_row(Index i) const;
 
   Body& body_;
   par::SharedParticles shared_;  // distributed: every rank's surface points, on every rank

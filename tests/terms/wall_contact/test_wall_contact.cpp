@@ -13,7 +13,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <iostream>
+#include <string>
+#include <vector>
 
 namespace rkpm::sim {
 namespace {
@@ -48,6 +51,15 @@ lambda = 1e4
 
 // distance 0.8 um, exclusion 1.2 um: the faces' inner sheets are 2 um apart in the
 // reference shell, so they interact once pressed closer than 0.8 um.
+// An outer pressure of 300 Pa, which flattens the shell until its faces meet.
+const char* const kOuterPressure = R"(
+[[term]]
+type = "surface_pressure"
+body = "cell"
+surface = "outer"
+pressure = 300
+)";
+
 const char* const kWallContact = R"(
 [[term]]
 type = "wall_contact"
@@ -173,15 +185,8 @@ TEST(WallContact, ForcesAreMinusTheEnergyGradient) {
 // distance.
 TEST(WallContact, ShellPressedFlatKeepsItsFacesApart) {
   testing::ScopedThreads two(2);
-  const std::string pressure = R"(
-[[term]]
-type = "surface_pressure"
-body = "cell"
-surface = "outer"
-pressure = 300
-)";
   for (const bool with_term : {false, true}) {
-    auto sw = build_from_text(shell_scene(pressure + (with_term ? kWallContact : "")));
+    auto sw = build_from_text(shell_scene(std::string(kOuterPressure) + (with_term ? kWallContact : "")));
     Integrator integrator(*sw.world, sw.settings);
     integrator.initialize();
     for (int step = 0; step < 20000 && !integrator.converged(); ++step) integrator.step();
@@ -197,6 +202,93 @@ pressure = 300
       EXPECT_LT(s.inner_gap_centre, -1e-6);
     }
   }
+}
+
+// contact_mass_scaling: on the squeezed shell, with random velocities, raising the
+// pressed particles' inertia to a step four times the contact's own brings the contact's
+// limit to that step (within 1 %), makes no particle lighter, leaves the particles without a pair
+// alone, keeps every velocity, and does nothing when asked for a step the contact
+// already allows.
+TEST(WallContact, ContactMassScalingRaisesTheContactsStep) {
+  testing::ScopedThreads two(2);
+  auto sw = build_from_text(shell_scene("[body.initial]\nstretch = [1.0, 1.0, 0.3]\nrandom_velocity = 1e-3\n" +
+                                        std::string(kWallContact)));
+  World& world = *sw.world;
+  Body& body = *world.bodies.front();
+  WallContact& term = wall_term(world);
+  term_forces(world, term);
+  ASSERT_GT(term.active_pairs(), 0u);
+  const double own = term.stable_dt(world);
+  ASSERT_TRUE(std::isfinite(own));
+  const std::vector<double> inertia_before = body.inertia;
+  const std::vector<Vec3> v_before = body.v;
+
+  term.scale_inertia_to(world, 0.5 * own);  // already allowed: nothing changes
+  EXPECT_EQ(body.inertia, inertia_before);
+  EXPECT_EQ(body.v, v_before);
+
+  const double target = 4.0 * own;
+  term.scale_inertia_to(world, target);
+  // The facing walls' particles are raised alike, so the passes bring the stiffest row
+  // to the bound: the contact's limit lands on the step asked for, not far past it (that
+  // would mean particles made heavier than needed).
+  EXPECT_NEAR(term.stable_dt(world) / target, 1.0, 0.01);
+  std::vector<char> on_surface(body.size(), 0);
+  for (Index I : term.particles()) on_surface[static_cast<std::size_t>(I)] = 1;
+  EXPECT_EQ(body.v, v_before);
+  int raised = 0;
+  for (std::size_t I = 0; I < body.size(); ++I) {
+    EXPECT_GE(body.inertia[I], inertia_before[I]);
+    if (!on_surface[I]) {
+      EXPECT_EQ(body.inertia[I], inertia_before[I]);
+    }
+    if (body.inertia[I] > inertia_before[I]) ++raised;
+  }
+  EXPECT_GT(raised, 0);
+  EXPECT_LT(raised, static_cast<int>(term.particles().size()));  // only the pressed ones
+}
+
+// The same equilibrium with and without contact_mass_scaling: the shell pressed flat
+// (surface pressure and wall contact), relaxed to a tight residual both ways; the final
+// displacements agree to 1e-3 of the largest (the relaxation issue's criterion for a
+// faster route), the scaled run made the contact heavier, and its energy ledger, which
+// books the kinetic energy the heavier particles gained, balances as well as the plain
+// run's.
+TEST(WallContact, ContactMassScalingReachesTheSameEquilibrium) {
+  testing::ScopedThreads two(2);
+  std::vector<std::vector<Vec3>> finals;
+  std::vector<std::int64_t> steps;
+  std::vector<double> ledger_error;
+  for (const bool scaled : {false, true}) {
+    std::string text = shell_scene(std::string(kOuterPressure) + kWallContact);
+    text.replace(text.find("relax_force_tol = 1e-4"), 22,
+                 std::string("relax_force_tol = 1e-6") + (scaled ? "\ncontact_mass_scaling = true" : ""));
+    auto sw = build_from_text(text);
+    ASSERT_EQ(sw.settings.contact_mass_scaling, scaled);
+    Integrator integrator(*sw.world, sw.settings);
+    integrator.initialize();
+    for (int step = 0; step < 40000 && !integrator.converged(); ++step) integrator.step();
+    ASSERT_TRUE(integrator.converged()) << "scaled = " << scaled;
+    const Body& body = *sw.world->bodies.front();
+    if (scaled) {
+      double heaviest = 0.0;
+      for (std::size_t I = 0; I < body.size(); ++I) heaviest = std::max(heaviest, body.inertia[I] / body.mass[I]);
+      EXPECT_GT(heaviest, 1.0);
+    }
+    finals.push_back(body.d);
+    ledger_error.push_back(integrator.measure_energy().relative_error());
+    steps.push_back(sw.world->step);
+  }
+  double largest = 0.0, difference = 0.0;
+  for (std::size_t I = 0; I < finals[0].size(); ++I) {
+    largest = std::max(largest, finals[0][I].norm());
+    difference = std::max(difference, (finals[1][I] - finals[0][I]).norm());
+  }
+  std::cout << "  steps " << steps[0] << " plain, " << steps[1] << " with contact_mass_scaling; difference "
+            << difference / largest << " of the largest displacement; ledger errors " << ledger_error[0] << ", "
+            << ledger_error[1] << "\n";
+  EXPECT_LT(difference, 1e-3 * largest);
+  EXPECT_LT(ledger_error[1], 2.0 * ledger_error[0] + 1e-3);
 }
 
 }  // namespace
