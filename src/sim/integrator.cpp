@@ -150,10 +150,6 @@ void Integrator::initialize() {
   update_convergence(kinetic_energy(world_));
 }
 
-// Mass scaling for relaxation: the target is the median of every particle's own wave step
-// at the start, so at most half the particles get heavier and the step is no longer set
-// by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
-// The median of an even count is the upper middle value: deterministic, no averaging.
 // contact_mass_scaling: a stiff contact would hold the whole relaxation at its own
 // step (its Gershgorin bound); its particles get heavier instead, until its limit
 // reaches about the bodies' own step. The equilibrium does not depend on the masses.
@@ -168,6 +164,10 @@ void Integrator::scale_inertia_for_terms() {
   ledger_.dissipated -= kinetic_energy(world_) - kinetic_before;
 }
 
+// Mass scaling for relaxation: the target is the median of every particle's own wave step
+// at the start, so at most half the particles get heavier and the step is no longer set
+// by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
+// The median of an even count is the upper middle value: deterministic, no averaging.
 void Integrator::scale_masses() {
   std::vector<std::vector<double>> steps(world_.bodies.size());
   std::vector<double> all;
