@@ -33,10 +33,9 @@ void check_integrator(ParamSet& p) {
   }
   if (p.given("relax_method") && p.choice("mode") != "relax")
     throw p.error("relax_method", "no relax_method unless mode = \"relax\"");
-  if (p.flag("mass_scaling") && p.choice("mode") != "relax")
-    throw p.error("mass_scaling", "false unless mode = \"relax\": a dynamic run's masses are physical");
-  if (p.flag("contact_mass_scaling") && p.choice("mode") != "relax")
-    throw p.error("contact_mass_scaling", "false unless mode = \"relax\": a dynamic run's masses are physical");
+  for (const char* key : {"mass_scaling", "contact_mass_scaling"})
+    if (p.flag(key) && p.choice("mode") != "relax")
+      throw p.error(key, "false unless mode = \"relax\": a dynamic run's masses are physical");
   const auto& levels = p.reals("nested_levels");
   if (!levels.empty() && p.choice("mode") != "relax")
     throw p.error("nested_levels", "[] unless mode = \"relax\": coarse levels warm-start a relaxation");
@@ -94,8 +93,9 @@ ParamTable integrator_section() {
       ParamSpec::boolean("contact_mass_scaling").defaults(false)
           .help("relax mode: a wall_contact term makes the particles it presses heavier, until its own "
                 "stable step (its stiffest pair's Gershgorin bound) reaches the bodies' step, instead of "
-                "holding the whole relaxation at the contact's step; the particles keep their kinetic "
-                "energy, and the equilibrium does not depend on the masses. A raised inertia stays raised "
+                "holding the whole relaxation at the contact's step; the velocities are kept (the energy "
+                "ledger books the kinetic energy this adds), and the equilibrium does not depend on the "
+                "masses. A raised inertia stays raised "
                 "for the rest of the run. The two-body contact term keeps its own limit. Not allowed in "
                 "dynamic mode, where the masses are physical (docs/relaxation.md)."),
       ParamSpec::real_list("nested_levels", "-").greater_than(0).less_than(1).defaults(std::vector<double>{})
