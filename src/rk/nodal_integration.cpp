@@ -265,7 +265,7 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
   {
     ShapeValues sv;
     std::vector<particles::DualFacet> facets;
-    std::vector<std::pair<Index, double>> near_cell;
+    CandidateSet near_cell;
     RowAccumulator acc(n);
     SharedFacetValues shared;
 #pragma omp for schedule(dynamic, 1)

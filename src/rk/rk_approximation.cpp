@@ -3,7 +3,7 @@
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/rk/element_edges.hpp"
 
-#include <Eigen/Cholesky>
+#include <Eigen/Cholesky>  // LLT
 #include <Eigen/Eigenvalues>
 #include <fmt/format.h>
 
@@ -141,11 +141,31 @@ SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, co
   return {{}, scaled(local_spacing(cloud), settings.support), {}};
 }
 
-inline double RKApproximation::squared_normalized_distance(Index id, const Vec3& x) const {
+namespace {
+// q^2 = r^T G r from G's distinct entries (CandidateSet::g's order). Every q^2 of the
+// approximation is formed here, so a particle is in or out of a support alike
+// wherever it is asked.
+inline double quadratic_form(double g00, double g11, double g22, double g01, double g02, double g12, double rx,
+                             double ry, double rz) {
+  const double q2 = g00 * rx * rx + g11 * ry * ry + g22 * rz * rz + 2.0 * (g01 * rx * ry + g02 * rx * rz + g12 * ry * rz);
+  return q2 > 0.0 ? q2 : 0.0;
+}
+}  // namespace
+
+std::array<double, 6> RKApproximation::metric_entries(Index id) const {
   const auto i = static_cast<std::size_t>(id);
-  const Vec3 r = x - X_[i];
-  if (metric_.empty()) return r.squaredNorm() / (a_[i] * a_[i]);
-  return std::max(0.0, r.dot(metric_[i] * r));
+  if (metric_.empty()) {
+    const double g = 1.0 / (a_[i] * a_[i]);
+    return {g, g, g, 0.0, 0.0, 0.0};
+  }
+  const Mat3& G = metric_[i];
+  return {G(0, 0), G(1, 1), G(2, 2), G(1, 0), G(2, 0), G(2, 1)};
+}
+
+double RKApproximation::squared_normalized_distance(Index id, const Vec3& x) const {
+  const Vec3 r = x - X_[static_cast<std::size_t>(id)];
+  const auto g = metric_entries(id);
+  return quadratic_form(g[0], g[1], g[2], g[3], g[4], g[5], r.x(), r.y(), r.z());
 }
 
 double RKApproximation::normalized_distance(Index id, const Vec3& x) const {
@@ -164,42 +184,50 @@ Vec3 RKApproximation::kernel_gradient(Index id, const Vec3& x, double q, double 
 }
 
 bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
-  // Only the particles whose own support covers x count (evaluate_basis skips the
-  // rest): dropping them before the sort by id leaves the same list, in the same order.
-  search_.query_unordered(x, a_max_, out.scratch);
-  out.scratch.erase(std::remove_if(out.scratch.begin(), out.scratch.end(),
-                                   [&](const std::pair<Index, double>& c) {
-                                     return squared_normalized_distance(c.first, x) >= 1.0;
-                                   }),
-                    out.scratch.end());
-  NeighborSearch::sort_by_id(out.scratch);
-  return evaluate_among(x, out.scratch, out, with_gradient);
+  candidates(x, 0.0, out.near);
+  return evaluate_among(x, out.near, out, with_gradient);
 }
 
-void RKApproximation::candidates(const Vec3& centre, double reach,
-                                 std::vector<std::pair<Index, double>>& out) const {
+void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet& out) const {
+  auto& found = out.found;
   // A point within `reach` of the centre is reached only by particles within
   // a_max + reach of the centre; the relative slack covers the rounding of that bound.
-  search_.query_unordered(centre, (a_max_ + reach) * (1.0 + 1e-9), out);
+  search_.query_unordered(centre, (a_max_ + reach) * (1.0 + 1e-9), found);
   // Of those, keep the ones whose own support reaches that far: q_I is a norm, so
   // q_I(x) <= q_I(centre) + reach / b_I with b_I the support's smallest semi-axis (its
   // radius for a ball). What is dropped has phi_I = 0 at every such point, so the
   // evaluations give the same result, bit for bit, from a shorter list.
   const double slack = 1.0 + 1e-9;
-  out.erase(std::remove_if(out.begin(), out.end(),
-                           [&](const std::pair<Index, double>& c) {
-                             const auto i = static_cast<std::size_t>(c.first);
-                             if (metric_.empty())
-                               return (X_[i] - centre).norm() / a_[i] >= (1.0 + reach / a_[i]) * slack;
-                             return normalized_distance(c.first, centre) >= (1.0 + reach / min_axis_[i]) * slack;
-                           }),
-            out.end());
+  found.erase(std::remove_if(found.begin(), found.end(),
+                             [&](const std::pair<Index, double>& c) {
+                               const auto i = static_cast<std::size_t>(c.first);
+                               const double b = metric_.empty() ? a_[i] : min_axis_[i];
+                               return std::sqrt(squared_normalized_distance(c.first, centre)) >=
+                                      (1.0 + reach / b) * slack;
+                             }),
+              found.end());
   // Sorted by id after the filter, which keeps the order of what it keeps.
-  NeighborSearch::sort_by_id(out);
+  NeighborSearch::sort_by_id(found);
+  const std::size_t m = found.size();
+  out.id.resize(m);
+  out.x.resize(m);
+  out.y.resize(m);
+  out.z.resize(m);
+  for (auto& g : out.g) g.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const Index id = found[k].first;
+    const Vec3& X = X_[static_cast<std::size_t>(id)];
+    out.id[k] = id;
+    out.x[k] = X.x();
+    out.y[k] = X.y();
+    out.z[k] = X.z();
+    const auto g = metric_entries(id);
+    for (int e = 0; e < 6; ++e) out.g[e][k] = g[e];
+  }
 }
 
-bool RKApproximation::evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,
-                                     ShapeValues& out, bool with_gradient) const {
+bool RKApproximation::evaluate_among(const Vec3& x, const CandidateSet& candidates, ShapeValues& out,
+                                     bool with_gradient) const {
   return settings_.basis == Basis::Linear ? evaluate_basis<4>(x, candidates, out, with_gradient)
                                           : evaluate_basis<10>(x, candidates, out, with_gradient);
 }
@@ -217,8 +245,8 @@ void RKApproximation::evaluate_or_throw(const Vec3& x, ShapeValues& out, bool wi
 }
 
 template <int N>
-bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates,
-                                     ShapeValues& out, bool with_gradient) const {
+bool RKApproximation::evaluate_basis(const Vec3& x, const CandidateSet& candidates, ShapeValues& out,
+                                     bool with_gradient) const {
   using Basis = MonomialBasis<N>;
   using VecN = Eigen::Matrix<double, N, 1>;
   using MatN = Eigen::Matrix<double, N, N>;
@@ -226,43 +254,91 @@ bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<
   out.ids.clear();
   out.psi.clear();
   out.grad.clear();
+  out.offsets.clear();
   // Keep only the particles whose own support covers x; phi_I(x) > 0 for those.
-  const double scale = a_max_;
+  const double inv_scale = 1.0 / a_max_;
   MatN M = MatN::Zero();
-  for (const auto& candidate : candidates) {
-    const Index id = candidate.first;
-    // The distance from x itself (the candidate's stored one may be from another centre).
-    const double q2 = squared_normalized_distance(id, x);
+  // The linear basis's ten distinct moments in registers: the Eigen matrix in memory
+  // made each sum wait for the store of the one before.
+  double mom[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  // Every candidate's q^2 first, in one pass of straight-line arithmetic over the
+  // gathered arrays; then the few inside their supports.
+  const std::size_t m = candidates.size();
+  out.q2.resize(m);
+  {
+    const double px = x.x(), py = x.y(), pz = x.z();
+    const double *cx = candidates.x.data(), *cy = candidates.y.data(), *cz = candidates.z.data();
+    const double *g00 = candidates.g[0].data(), *g11 = candidates.g[1].data(), *g22 = candidates.g[2].data();
+    const double *g01 = candidates.g[3].data(), *g02 = candidates.g[4].data(), *g12 = candidates.g[5].data();
+    double* q2 = out.q2.data();
+    for (std::size_t k = 0; k < m; ++k)
+      q2[k] = quadratic_form(g00[k], g11[k], g22[k], g01[k], g02[k], g12[k], px - cx[k], py - cy[k], pz - cz[k]);
+  }
+  for (std::size_t k = 0; k < m; ++k) {
+    const double q2 = out.q2[k];
     if (q2 >= 1.0) continue;
     const double w = evaluate_kernel(settings_.kernel, std::sqrt(q2)).w;
     if (w <= 0.0) continue;
+    const Index id = candidates.id[k];
+    const Vec3 xi = Vec3(candidates.x[k] - x.x(), candidates.y[k] - x.y(), candidates.z[k] - x.z()) * inv_scale;
     out.ids.push_back(id);
     out.psi.push_back(w);  // phi_I for now; corrected below
-    const VecN h = Basis::value((X_[static_cast<std::size_t>(id)] - x) / scale);
-    const VecN wh = w * h;
-    // The lower triangle only (what LDLT reads); mirrored below.
-    for (int j = 0; j < N; ++j)
-      for (int i = j; i < N; ++i) M(i, j) += wh(i) * h(j);
+    out.offsets.push_back(xi);
+    if constexpr (N == 4) {
+      const double wx = w * xi.x(), wy = w * xi.y(), wz = w * xi.z();
+      mom[0] += w;
+      mom[1] += wx;
+      mom[2] += wy;
+      mom[3] += wz;
+      mom[4] += wx * xi.x();
+      mom[5] += wy * xi.x();
+      mom[6] += wz * xi.x();
+      mom[7] += wy * xi.y();
+      mom[8] += wz * xi.y();
+      mom[9] += wz * xi.z();
+    } else {
+      const VecN h = Basis::value(xi);
+      const VecN wh = w * h;
+      // The lower triangle only (what LDLT reads); mirrored below.
+      for (int j = 0; j < N; ++j)
+        for (int i = j; i < N; ++i) M(i, j) += wh(i) * h(j);
+    }
   }
-  M.template triangularView<Eigen::StrictlyUpper>() = M.transpose();
+  if constexpr (N == 4) {
+    M << mom[0], mom[1], mom[2], mom[3],  //
+        mom[1], mom[4], mom[5], mom[6],   //
+        mom[2], mom[5], mom[7], mom[8],   //
+        mom[3], mom[6], mom[8], mom[9];
+  } else {
+    M.template triangularView<Eigen::StrictlyUpper>() = M.transpose();
+  }
   out.n_neighbors = static_cast<int>(out.ids.size());
   out.condition = 0.0;
   if (out.n_neighbors < N) return false;
 
-  const Eigen::LDLT<MatN> ldlt(M);
-  const double rcond = ldlt.info() == Eigen::Success ? ldlt.rcond() : 0.0;
-  out.condition = rcond > 0.0 ? 1.0 / rcond : 0.0;
-  if (!(rcond > 0.0) || out.condition > settings_.max_condition || !ldlt.isPositive()) return false;
+  // M is a sum of w_I H_I H_I^T with w_I > 0: positive definite unless the particles
+  // in reach lie on a plane (or fewer), so a Cholesky factorisation without pivoting
+  // either succeeds or says it is singular. Its inverse is cheap at this size and gives
+  // the 1-norm condition number exactly (an estimate, such as LDLT::rcond, cost more).
+  const Eigen::LLT<MatN> llt(M);
+  if (llt.info() != Eigen::Success) return false;
+  const MatN M_inv = llt.solve(MatN::Identity());
+  out.condition = M.cwiseAbs().colwise().sum().maxCoeff() * M_inv.cwiseAbs().colwise().sum().maxCoeff();
+  if (!std::isfinite(out.condition) || out.condition > settings_.max_condition) return false;
 
-  VecN e0 = VecN::Zero();
-  e0(0) = 1.0;
-  const VecN c = ldlt.solve(e0);  // correction coefficients: Psi_I = c . H_I phi_I
+  const VecN c = M_inv.col(0);  // correction coefficients: Psi_I = c . H_I phi_I
 
   const std::size_t n = out.ids.size();
   if (!with_gradient) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const VecN h = Basis::value((X_[static_cast<std::size_t>(out.ids[k])] - x) / scale);
-      out.psi[k] *= c.dot(h);
+    if constexpr (N == 4) {
+      // c . H written out: through a basis vector on the stack, each product waited
+      // for two 8-byte stores to forward into one 16-byte load.
+      for (std::size_t k = 0; k < n; ++k) {
+        const Vec3& xi = out.offsets[k];
+        out.psi[k] *= c(0) + c(1) * xi.x() + c(2) * xi.y() + c(3) * xi.z();
+      }
+    } else {
+      for (std::size_t k = 0; k < n; ++k) out.psi[k] *= c.dot(Basis::value(out.offsets[k]));
     }
     return true;
   }
@@ -272,28 +348,27 @@ bool RKApproximation::evaluate_basis(const Vec3& x, const std::vector<std::pair<
   out.grad.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const Index id = out.ids[k];
-    const Vec3 r = x - X_[static_cast<std::size_t>(id)];
     const double q = normalized_distance(id, x);
     const auto kv = evaluate_kernel(settings_.kernel, q);
     const Vec3 dphi = kernel_gradient(id, x, q, kv.dw_dq);
     out.grad[k] = dphi;  // d phi_I / dx for now
-    const Vec3 xi = -r / scale;
+    const Vec3& xi = out.offsets[k];
     const VecN h = Basis::value(xi);
     for (int j = 0; j < 3; ++j) {
-      const VecN dh = -Basis::derivative(xi, j) / scale;  // d xi / dx = -1/d
+      const VecN dh = -Basis::derivative(xi, j) * inv_scale;  // d xi / dx = -1/d
       dM[j].noalias() += kv.w * (dh * h.transpose() + h * dh.transpose()) + dphi(j) * h * h.transpose();
     }
   }
   VecN dc[3];
-  for (int j = 0; j < 3; ++j) dc[j] = -ldlt.solve(dM[j] * c);
+  for (int j = 0; j < 3; ++j) dc[j] = -M_inv * (dM[j] * c);
   for (std::size_t k = 0; k < n; ++k) {
-    const Vec3 xi = (X_[static_cast<std::size_t>(out.ids[k])] - x) / scale;
+    const Vec3& xi = out.offsets[k];
     const VecN h = Basis::value(xi);
     const double phi = out.psi[k];
     const double ch = c.dot(h);
     Vec3 g;
     for (int j = 0; j < 3; ++j)
-      g(j) = dc[j].dot(h) * phi - c.dot(Basis::derivative(xi, j)) / scale * phi + ch * out.grad[k](j);
+      g(j) = dc[j].dot(h) * phi - c.dot(Basis::derivative(xi, j)) * inv_scale * phi + ch * out.grad[k](j);
     out.grad[k] = g;
     out.psi[k] = ch * phi;
   }

@@ -21,6 +21,7 @@
 #include "rkpm/rk/kernel.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -48,13 +49,28 @@ struct ApproximationError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The particles whose supports may cover points near one centre (RKApproximation::
+// candidates), sorted by id, with their positions and support metrics gathered side by
+// side: an evaluation then tests them all with straight-line arithmetic over
+// contiguous arrays (which the compiler vectorizes) instead of chasing each id.
+struct CandidateSet {
+  std::vector<Index> id;
+  std::vector<double> x, y, z;  // X_I
+  // G_I's distinct entries 00, 11, 22, 01, 02, 12 (a ball: 1/a_I^2 on the diagonal).
+  std::array<std::vector<double>, 6> g;
+  std::vector<std::pair<Index, double>> found;  // the tree query's buffer
+  std::size_t size() const { return id.size(); }
+};
+
 // Shape-function values (and optionally gradients) at one evaluation point.
 struct ShapeValues {
   std::vector<Index> ids;                          // particles whose support covers the point, sorted
   std::vector<double> psi;
   std::vector<Vec3> grad;                          // filled only when gradients are requested
-  std::vector<std::pair<Index, double>> scratch;   // neighbour query buffer
-  double condition = 0.0;                          // estimated condition number of M (1-norm)
+  CandidateSet near;                               // evaluate()'s candidates
+  std::vector<double> q2;                          // scratch: q_I^2 of each candidate
+  std::vector<Vec3> offsets;                       // scratch: (X_I - x) / d of each id
+  double condition = 0.0;                          // condition number of M (1-norm)
   int n_neighbors = 0;
 };
 
@@ -96,11 +112,10 @@ class RKApproximation {
 
   // For many evaluation points near one centre (the facets of one smoothing cell): the
   // particles that can reach any point within `reach` of `centre`, sorted by id, found
-  // with one tree query; then `evaluate_among` evaluates at such a point from that list
+  // with one tree query; then `evaluate_among` evaluates at such a point from that set
   // alone, with the same result as `evaluate` (same neighbours, same order).
-  void candidates(const Vec3& centre, double reach, std::vector<std::pair<Index, double>>& out) const;
-  bool evaluate_among(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
-                      bool with_gradient) const;
+  void candidates(const Vec3& centre, double reach, CandidateSet& out) const;
+  bool evaluate_among(const Vec3& x, const CandidateSet& candidates, ShapeValues& out, bool with_gradient) const;
 
   const std::vector<Vec3>& points() const { return X_; }
   // a_I: the support's radius, or for an ellipsoid its largest semi-axis.
@@ -115,9 +130,10 @@ class RKApproximation {
  private:
   // q^2, without the square root the kernel's support test does not need.
   double squared_normalized_distance(Index id, const Vec3& x) const;
+  // G_I's distinct entries in CandidateSet::g's order.
+  std::array<double, 6> metric_entries(Index id) const;
   template <int N>
-  bool evaluate_basis(const Vec3& x, const std::vector<std::pair<Index, double>>& candidates, ShapeValues& out,
-                      bool with_gradient) const;
+  bool evaluate_basis(const Vec3& x, const CandidateSet& candidates, ShapeValues& out, bool with_gradient) const;
 
   RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings);
   static SupportEllipsoids supports_of(const particles::Cloud& cloud, const RKSettings& settings);
