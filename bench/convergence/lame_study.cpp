@@ -88,8 +88,8 @@ CaseResult run_lame_case(Scheme scheme, Resolution resolution, const CaseSetting
   const rk::RKApproximation rk(cloud, rk_settings);
   const rk::GradientOperator gradient = rk::build_gradient_operator(
       cloud, rk, scheme == Scheme::Direct ? rk::Integration::Direct : rk::Integration::SCNI,
-      settings.gradient_precision);
-  const rk::BoundaryQuadrature boundary = rk::build_boundary_quadrature(cloud, rk);
+      settings.gradient_precision, {}, settings.cell_quadrature);
+  const rk::BoundaryQuadrature boundary = rk::build_boundary_quadrature(cloud, rk, 0u, settings.cell_quadrature);
   const rk::NodalInterpolation interpolation = rk::build_nodal_interpolation(cloud, rk);
   const double alpha = scheme == Scheme::StabilizedSCNI ? settings.alpha : 0.0;
   rk::Stabilization stabilization =

@@ -29,6 +29,7 @@ struct CaseSettings {
   double alpha = 0.1;    // stabilization coefficient, used by StabilizedSCNI only
   rk::SupportShape support_shape = rk::SupportShape::Sphere;              // [body.rk] support_shape
   rk::GradientPrecision gradient_precision = rk::GradientPrecision::Double;  // [body.rk] gradient_precision
+  rk::FacetRule cell_quadrature = rk::FacetRule::Corners;                    // [body.rk] cell_quadrature
   SolverSettings solver;
 };
 

@@ -60,6 +60,11 @@ int main(int argc, char** argv) {
   app.add_option("--gradient-precision", settings.gradient_precision,
                  "[body.rk] gradient_precision: double or float storage of the smoothed gradients")
       ->transform(CLI::CheckedTransformer(precisions));
+  const std::map<std::string, rkpm::rk::FacetRule> rules{{"corners", rkpm::rk::FacetRule::Corners},
+                                                          {"centroids", rkpm::rk::FacetRule::Centroids}};
+  app.add_option("--cell-quadrature", settings.cell_quadrature,
+                 "[body.rk] cell_quadrature: corners or centroids of the smoothing cells' facets")
+      ->transform(CLI::CheckedTransformer(rules));
   app.add_option("--tolerance", settings.solver.relative_tolerance, "CG relative residual tolerance");
   app.add_option("--max-iterations", settings.solver.max_iterations, "CG iteration limit");
   CLI11_PARSE(app, argc, argv);

@@ -62,11 +62,12 @@ void write_markdown(const std::string& path, const std::vector<RunRecord>& runs,
   auto out = fmt::output_file(path);
   const LameSphere& p = settings.problem;
   out.print("Lame sphere a = {}, b = {}, E = {}, nu = {}, p = {}; cubic B-spline kernel, linear basis, "
-            "support {} x local spacing ({}), gradients stored in {}; stabilization alpha = {}; CG tolerance {:.0e} "
-            "(relative residual).\n\n",
+            "support {} x local spacing ({}), gradients stored in {}, SCNI cell quadrature at the facets' {}; "
+            "stabilization alpha = {}; CG tolerance {:.0e} (relative residual).\n\n",
             p.a, p.b, p.E, p.nu, p.p, settings.support,
             settings.support_shape == rk::SupportShape::Ellipsoid ? "ellipsoids" : "balls",
             settings.gradient_precision == rk::GradientPrecision::Float ? "single precision" : "double precision",
+            settings.cell_quadrature == rk::FacetRule::Corners ? "corners" : "centroids",
             settings.alpha, settings.solver.relative_tolerance);
   for (Scheme scheme : {Scheme::StabilizedSCNI, Scheme::SCNI, Scheme::Direct}) {
     bool any = false;

@@ -40,12 +40,17 @@ void time_stages(const scene::Scene& scene, SizeResult& r) {
     std::unique_ptr<rk::RKApproximation> approx;
     r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, sim::rk_settings(spec.rk)); });
     const auto scheme = sim::integration_scheme(spec.rk);
-    r.gradient_s += seconds_of([&] { (void)rk::build_gradient_operator(cloud, *approx, scheme); });
+    r.gradient_s += seconds_of([&] {
+      (void)rk::build_gradient_operator(cloud, *approx, scheme, sim::gradient_precision(spec.rk), {},
+                                        sim::cell_quadrature(spec.rk));
+    });
     r.interpolation_s += seconds_of([&] { (void)rk::build_nodal_interpolation(cloud, *approx); });
-    r.boundary_s += seconds_of([&] { (void)rk::build_boundary_quadrature(cloud, *approx); });
-    // The neighbour search inside the interpolation build: RKApproximation::evaluate
-    // queries the largest support radius around each point. A tree of our own (its
-    // build not timed) answers the same queries.
+    r.boundary_s += seconds_of(
+        [&] { (void)rk::build_boundary_quadrature(cloud, *approx, 0u, sim::cell_quadrature(spec.rk)); });
+    // The neighbour search inside the interpolation build, bounded from above: the same
+    // queries with the cloud's largest support radius around each point (the build
+    // itself queries the largest support near the point, rk/support_bound.hpp), on a
+    // tree of our own (its build not timed).
     const rk::NeighborSearch search(cloud.X);
     const double radius = *std::max_element(approx->support_radius().begin(), approx->support_radius().end());
     const auto n = static_cast<Index>(cloud.size());

@@ -22,21 +22,14 @@ Vec3 face_centroid(const std::vector<Vec3>& X, const std::int32_t* ids, int n) {
   return c / static_cast<double>(n);
 }
 
-// One-point (centroid) rule on triangle (p0, p1, p2); `sign` = -1 flips it for
+// Triangle (p0, p1, p2) with its centroid and area vector; `sign` = -1 flips it for
 // the cell on the other side without changing a single bit of its geometry.
-// `face` is the boundary face a boundary piece lies on, -1 for interior facets;
-// `neighbor` and `shared_key` name an interior facet's other cell and the facet itself.
+// `face` is the boundary face a boundary piece lies on, -1 for interior facets.
 void add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2, double sign, std::int32_t face,
-                  std::vector<DualFacet>& out, std::int32_t neighbor = -1, std::int64_t shared_key = -1) {
+                  std::vector<DualFacet>& out) {
   const Vec3 point = (p0 + p1 + p2) / 3.0;
   const Vec3 area = 0.5 * (p1 - p0).cross(p2 - p0);
-  out.push_back({point, sign * area, face >= 0, face, neighbor, shared_key});
-}
-
-// Key of triangle t (0 or 1) of the facet of element e's local edge: the same from
-// both ends of the edge. An element has at most 12 edges.
-std::int64_t interior_facet_key(int element, int edge_index, int triangle) {
-  return (static_cast<std::int64_t>(element) * 12 + edge_index) * 2 + triangle;
+  out.push_back({point, sign * area, {p0, p1, p2}, face >= 0, face});
 }
 
 // CSR from (key, value) pairs in value order; keys in [0, n_keys).
@@ -109,9 +102,8 @@ void DualCells::facets(std::int32_t particle, std::vector<DualFacet>& out) const
       const Vec3& cb = centroid_of(edge.face_b);
       // The topology orients the facet from edge.first to edge.second.
       const double sign = local == edge.first ? 1.0 : -1.0;
-      const std::int32_t other = nodes[local == edge.first ? edge.second : edge.first];
-      add_triangle(mid, ca, centre, sign, -1, out, other, interior_facet_key(e, edge_index, 0));
-      add_triangle(mid, centre, cb, sign, -1, out, other, interior_facet_key(e, edge_index, 1));
+      add_triangle(mid, ca, centre, sign, -1, out);
+      add_triangle(mid, centre, cb, sign, -1, out);
     }
   }
 

@@ -125,6 +125,7 @@ RKApproximation::RKApproximation(const std::vector<Vec3>& X, std::vector<double>
       throw ApproximationError(fmt::format("particle {}: support radius {} is not a positive number", i, a_[i]));
     a_max_ = std::max(a_max_, a_[i]);
   }
+  bound_ = SupportBound(X_, a_);
 }
 
 RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings settings)
@@ -191,8 +192,9 @@ bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradie
 void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet& out) const {
   auto& found = out.found;
   // A point within `reach` of the centre is reached only by particles within
-  // a_max + reach of the centre; the relative slack covers the rounding of that bound.
-  search_.query_unordered(centre, (a_max_ + reach) * (1.0 + 1e-9), found);
+  // a_I + reach of the centre, a_I at most the largest support near it; the relative
+  // slack covers the rounding of that bound.
+  search_.query_unordered(centre, (bound_.near(centre, reach) + reach) * (1.0 + 1e-9), found);
   // Of those, keep the ones whose own support reaches that far: q_I is a norm, so
   // q_I(x) <= q_I(centre) + reach / b_I with b_I the support's smallest semi-axis (its
   // radius for a ball). What is dropped has phi_I = 0 at every such point, so the

@@ -197,6 +197,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 
   try {
     body->rk_settings = rk_settings(spec.rk);
+    body->cell_quadrature = cell_quadrature(spec.rk);
     const rk::RKApproximation rk = approximation(*body);
     const auto scheme = integration_scheme(spec.rk);
     // Distributed: this rank builds the rows of the points it owns (and, of the
@@ -211,7 +212,8 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
       interpolation_rows = own_rows;
       for (const auto& c : constrained) interpolation_rows[static_cast<std::size_t>(c.particle)] = 1;
     }
-    body->gradient = rk::build_gradient_operator(cloud, rk, scheme, gradient_precision(spec.rk), own_rows);
+    body->gradient =
+        rk::build_gradient_operator(cloud, rk, scheme, gradient_precision(spec.rk), own_rows, body->cell_quadrature);
     body->interpolation = rk::build_nodal_interpolation(cloud, rk, interpolation_rows);
   } catch (const rk::ApproximationError& e) {
     throw SetupError(fmt::format("{} body '{}': {}", where(spec.rk), body->name, e.what()));
@@ -321,6 +323,10 @@ rk::Integration integration_scheme(const scene::ParamSet& p) {
 
 rk::GradientPrecision gradient_precision(const scene::ParamSet& p) {
   return p.choice("gradient_precision") == "float" ? rk::GradientPrecision::Float : rk::GradientPrecision::Double;
+}
+
+rk::FacetRule cell_quadrature(const scene::ParamSet& p) {
+  return p.choice("cell_quadrature") == "centroids" ? rk::FacetRule::Centroids : rk::FacetRule::Corners;
 }
 
 IntegratorSettings integrator_settings(const scene::Scene& scene) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <iostream>
 #include <set>
 
@@ -25,11 +26,13 @@ struct Patch {
   double stabilization_force = 0;  // max |f_stab| for the linear field, relative
 };
 
+// `boundary_rule` is the boundary quadrature's rule, the gradient operator's by default.
 Patch patch_test(const particles::Cloud& cloud, Integration scheme,
-                 GradientPrecision precision = GradientPrecision::Double) {
+                 GradientPrecision precision = GradientPrecision::Double, FacetRule rule = FacetRule::Corners,
+                 std::optional<FacetRule> boundary_rule = std::nullopt) {
   const RKApproximation rk(cloud, RKSettings{});
-  const auto op = build_gradient_operator(cloud, rk, scheme, precision);
-  const auto bq = build_boundary_quadrature(cloud, rk);
+  const auto op = build_gradient_operator(cloud, rk, scheme, precision, {}, rule);
+  const auto bq = build_boundary_quadrature(cloud, rk, 0u, boundary_rule.value_or(rule));
   const auto n = cloud.size();
   Patch p;
 
@@ -95,11 +98,12 @@ Patch patch_test(const particles::Cloud& cloud, Integration scheme,
 // rows, so 1e-6 bounds their round-off while a wrong term (e.g. a missing own-particle
 // correction or a gather in absolute positions) shows at 1e-3 or more.
 void expect_patch(const particles::Cloud& cloud, const char* label,
-                  GradientPrecision precision = GradientPrecision::Double) {
-  const auto p = patch_test(cloud, Integration::SCNI, precision);
+                  GradientPrecision precision = GradientPrecision::Double, FacetRule rule = FacetRule::Corners) {
+  const auto p = patch_test(cloud, Integration::SCNI, precision, rule);
   const bool single = precision == GradientPrecision::Float;
   const double tolerance = single ? 1e-6 : 1e-10;
-  std::cout << label << " (SCNI, " << (single ? "float" : "double") << " storage, " << cloud.size()
+  std::cout << label << " (SCNI at the facets' " << (rule == FacetRule::Corners ? "corners" : "centroids") << ", "
+            << (single ? "float" : "double") << " storage, " << cloud.size()
             << " particles): integration constraint " << p.constraint << ", F error " << p.gradient
             << ", interior force " << p.interior_force << ", residual " << p.total_residual
             << ", stabilization force " << p.stabilization_force << "\n";
@@ -163,9 +167,10 @@ Eigen::MatrixXd stabilization_stiffness(const particles::Cloud& cloud, const RKA
 
 // Eigenvalues of the free-body stiffness relative to the largest, ascending.
 Eigen::VectorXd relative_spectrum(const particles::Cloud& cloud, Integration scheme, double alpha,
-                                  GradientPrecision precision = GradientPrecision::Double) {
+                                  GradientPrecision precision = GradientPrecision::Double,
+                                  FacetRule rule = FacetRule::Corners) {
   const RKApproximation rk(cloud, RKSettings{});
-  const auto op = build_gradient_operator(cloud, rk, scheme, precision);
+  const auto op = build_gradient_operator(cloud, rk, scheme, precision, {}, rule);
   Eigen::MatrixXd K = stiffness(op, cloud.size());
   if (alpha > 0.0) K += stabilization_stiffness(cloud, rk, alpha);
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(K, Eigen::EigenvaluesOnly);
@@ -208,6 +213,28 @@ TEST(PatchTest, SinglePrecisionStorageIsExactToItsRoundOff) {
   expect_patch(test::default_shell(), "RBC shell", GradientPrecision::Float);
 }
 
+TEST(PatchTest, CentroidRuleOnEveryCloud) {
+  expect_patch(test::jittered_block(), "jittered block", GradientPrecision::Double, FacetRule::Centroids);
+  expect_patch(test::small_sphere(), "sphere", GradientPrecision::Double, FacetRule::Centroids);
+  expect_patch(test::default_shell(), "RBC shell", GradientPrecision::Double, FacetRule::Centroids);
+}
+
+// The integration constraint holds only with the same rule on the boundary as in the
+// cells: the check above is not blind to the boundary quadrature. Mixing the rules
+// leaves F exact (each cell's rule is exact for linear fields) but unbalances the
+// boundary particles' forces by the difference of the two rules' boundary integrals.
+TEST(PatchTest, TheBoundaryQuadratureMustFollowTheCellRule) {
+  for (const auto& [cells, boundary] : {std::pair{FacetRule::Corners, FacetRule::Centroids},
+                                       std::pair{FacetRule::Centroids, FacetRule::Corners}}) {
+    const auto p = patch_test(test::jittered_block(), Integration::SCNI, GradientPrecision::Double, cells, boundary);
+    std::cout << "jittered block, mixed rules: integration constraint " << p.constraint << ", F error " << p.gradient
+              << ", residual " << p.total_residual << "\n";
+    EXPECT_LE(p.gradient, 1e-10);
+    EXPECT_GT(p.constraint, 1e-3);
+    EXPECT_GT(p.total_residual, 1e-4);
+  }
+}
+
 TEST(PatchTest, DirectNodalIntegrationFailsTheIntegrationConstraint) {
   // The contrast: without smoothing, F is exact (linear consistency of grad Psi) but the
   // integration constraint, and so the force balance, is violated.
@@ -223,6 +250,17 @@ TEST(Stability, FreeJitteredBlockHasExactlySixZeroModes) {
 }
 
 TEST(Stability, FreeSphereHasExactlySixZeroModes) { expect_stable(test::small_sphere(6), "small sphere"); }
+
+TEST(Stability, CentroidRuleKeepsExactlySixZeroModes) {
+  const auto spectrum =
+      relative_spectrum(test::jittered_block(6, 0.2), Integration::SCNI, 0.1, GradientPrecision::Double,
+                        FacetRule::Centroids);
+  std::cout << "small jittered block, centroid rule: eigenvalues below 1e-8 / below 1e-4 / 7th: "
+            << count_below(spectrum, 1e-8) << " / " << count_below(spectrum, 1e-4) << " / " << spectrum(6) << "\n";
+  EXPECT_EQ(count_below(spectrum, 1e-8), 6);
+  EXPECT_EQ(count_below(spectrum, 1e-4), 6);
+  EXPECT_GT(spectrum(6), 1e-3);
+}
 
 TEST(Stability, SinglePrecisionStorageKeepsExactlySixZeroModes) {
   const auto cloud = test::jittered_block(6, 0.2);

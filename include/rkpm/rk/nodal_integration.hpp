@@ -35,6 +35,14 @@ namespace rkpm::rk {
 
 enum class Integration { SCNI, Direct };
 
+// The quadrature of SCNI's cell-boundary integrals on each planar triangle of a
+// smoothing cell's surface (both exact for linear functions: the patch test holds with
+// either). Corners: the shape functions at the triangle's corners, a third of the area
+// each; the corners (edge midpoints, face and element centroids) are shared by up to
+// eight cells, so a hexahedral cloud costs about 7 evaluations per particle. Centroids:
+// at the triangle's centroid, about 24 per particle. docs/convergence.md compares them.
+enum class FacetRule { Corners, Centroids };
+
 // The transpose of a compressed-row pattern as index lists: for column I, the entries
 // (by index into the row arrays) that reference it, ordered by row. Lets a "scatter"
 // A^T y be computed as a gather: no atomics, deterministic.
@@ -78,12 +86,15 @@ struct GradientOperator {
   Vec3 entry(Index k) const { return single_precision() ? Vec3(grad_float[k].cast<double>()) : grad[k]; }
 };
 
-// Points on the body's surface with their outward area vectors and the shape
+// Points on the body's surface with their weights (outward area vectors) and the shape
 // functions there: the quadrature for tractions, surface terms and the integration
-// constraint, consistent with the SCNI cells (the same boundary facets).
+// constraint, consistent with the SCNI cells (the same boundary facets, by the same
+// FacetRule as the gradient operator: with corners, a point per distinct corner of a
+// cell's boundary pieces on one set of named surfaces, weighted by a third of the area
+// of each piece it is a corner of).
 struct BoundaryQuadrature {
   std::vector<Vec3> point;        // [m]
-  std::vector<Vec3> area;         // outward area vector [m^2]
+  std::vector<Vec3> area;         // outward area vector: the point's weight [m^2]
   std::vector<Index> owner;       // the particle whose dual cell the facet bounds
   std::vector<std::uint32_t> surface_mask;  // the named surfaces (Cloud::surface_names bits) the facet lies on
   std::vector<Index> row_offset;  // shape functions at each point (CSR)
@@ -112,18 +123,18 @@ struct NodalInterpolation {
 GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RKApproximation& rk,
                                          Integration scheme,
                                          GradientPrecision precision = GradientPrecision::Double,
-                                         const std::vector<char>& rows = {});
+                                         const std::vector<char>& rows = {}, FacetRule rule = FacetRule::Corners);
 // The facets on the named surfaces of `surface_bits` (Cloud::surface_bit; 0 = the whole
 // boundary). Built by the terms that integrate over a surface, for their surface only.
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const RKApproximation& rk,
-                                             std::uint32_t surface_bits = 0u);
+                                             std::uint32_t surface_bits = 0u, FacetRule rule = FacetRule::Corners);
 // The same for the facets of the boundary particles cloud.boundary_particles[first, last)
 // only, in the same order, with the cloud's dual cells built once by the caller: a caller
 // that reduces the quadrature as it goes builds it in batches, so the whole surface's
 // shape functions are never held at once.
 BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, const particles::DualCells& cells,
                                              const RKApproximation& rk, std::uint32_t surface_bits,
-                                             std::size_t first, std::size_t last);
+                                             std::size_t first, std::size_t last, FacetRule rule = FacetRule::Corners);
 NodalInterpolation build_nodal_interpolation(const particles::Cloud& cloud, const RKApproximation& rk,
                                              const std::vector<char>& rows = {});
 

@@ -20,6 +20,7 @@
 #include "rkpm/common/types.hpp"
 #include "rkpm/rk/kernel.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/rk/support_bound.hpp"
 
 #include <array>
 #include <stdexcept>
@@ -145,6 +146,7 @@ class RKApproximation {
   double a_max_ = 0.0;
   RKSettings settings_;
   NeighborSearch search_;
+  SupportBound bound_;  // the largest a_I near a point, for the query radius
 };
 
 }  // namespace rkpm::rk

@@ -66,6 +66,7 @@ struct Body {
   // of a block) are needed only to build operators. approximation(body) rebuilds it, the
   // same bits, for the terms that build operators of their own and for nested iteration.
   rk::RKSettings rk_settings;
+  rk::FacetRule cell_quadrature = rk::FacetRule::Corners;  // of the gradient operator and surface terms
   rk::GradientOperator gradient;            // smoothed gradients b_I(X_L), weights V_L
   rk::NodalInterpolation interpolation;     // Psi_I(X_J)
   rk::Stabilization stabilization;          // removes the spurious modes of nodal integration

@@ -40,5 +40,6 @@ IntegratorSettings integrator_settings(const scene::Scene& scene);
 rk::RKSettings rk_settings(const scene::ParamSet& rk_table);
 rk::Integration integration_scheme(const scene::ParamSet& rk_table);
 rk::GradientPrecision gradient_precision(const scene::ParamSet& rk_table);
+rk::FacetRule cell_quadrature(const scene::ParamSet& rk_table);
 
 }  // namespace rkpm::sim

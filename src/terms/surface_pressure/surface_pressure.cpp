@@ -18,7 +18,7 @@ namespace rkpm::sim {
 SurfacePressure::SurfacePressure(Body& body, std::uint32_t surface_bit, double pressure, const par::Comm& comm)
     : body_(body),
       comm_(comm),
-      quadrature_(rk::build_boundary_quadrature(body.cloud, approximation(body), surface_bit)),
+      quadrature_(rk::build_boundary_quadrature(body.cloud, approximation(body), surface_bit, body.cell_quadrature)),
       pressure_(pressure),
       force_(body.size(), Vec3::Zero()) {
   // A cell's facets are listed together, cells in increasing order: a rank's cells' are

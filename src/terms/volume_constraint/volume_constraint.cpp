@@ -45,7 +45,9 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   const rk::RKApproximation rk = approximation(body);
   const std::size_t boundary = body.cloud.boundary_particles.size();
   for (std::size_t first = 0; first < boundary; first += batch)
-    fold_facets(rk::build_boundary_quadrature(body.cloud, cells, rk, surface_bit, first, first + batch), fold);
+    fold_facets(
+        rk::build_boundary_quadrature(body.cloud, cells, rk, surface_bit, first, first + batch, body.cell_quadrature),
+        fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
   by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));

@@ -9,14 +9,16 @@
 //       [a, midpoint(a,next), centroid(face), midpoint(prev,a)],
 //     tagged with the boundary face they lie on.
 // Each quadrilateral is split into two triangles with fixed diagonals, so every facet
-// is planar: a one-point (centroid) rule integrates linear functions over it exactly,
-// and both cells sharing a facet evaluate the same points bit for bit. The cell
+// is planar: a one-point (centroid) rule, or a third of the area at each corner,
+// integrates linear functions over it exactly, and the cells sharing a facet or a
+// corner evaluate the same points bit for bit. The cell
 // surface is closed, which is what makes the smoothed gradients of SCNI satisfy
 // the divergence theorem, and so the linear patch test, exactly.
 #pragma once
 
 #include "rkpm/particles/cloud.hpp"
 
+#include <array>
 #include <vector>
 
 namespace rkpm::particles {
@@ -24,17 +26,15 @@ namespace rkpm::particles {
 struct DualFacet {
   Vec3 point;        // triangle centroid: the quadrature point [m]
   Vec3 area;         // outward area vector (unit normal times area) [m^2]
+  // The triangle's corners: particles, edge midpoints, face and element centroids, each
+  // computed in one order whichever cell asks, so a corner shared by several cells has
+  // the same bits in all of them (a builder may evaluate it once).
+  std::array<Vec3, 3> corner;
   bool on_boundary;  // true for pieces of the body's surface
   // Boundary pieces: index into Cloud::boundary_faces of the face the piece lies on,
   // which tells the named surface of a particle on an edge between two surfaces
   // (e.g. a block's corner belongs to three). -1 for interior facets.
   std::int32_t face = -1;
-  // Interior facets: the particle on the other side (whose cell has the same facet
-  // with the opposite area vector) and a key naming the facet the same from both
-  // sides (element, edge, triangle), so a builder can evaluate it once for both
-  // cells. -1 for boundary pieces.
-  std::int32_t neighbor = -1;
-  std::int64_t shared_key = -1;
 };
 
 class DualCells {
