@@ -290,36 +290,72 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
 // depend on the threads) and freed as they are joined, so the build holds little
 // beyond the result. (Keeping a ShapeValues per point, with its neighbour-query
 // buffer, held several times the result's memory.)
+// `owner` (optional): the points lie in the cells of these particles, a cell's points
+// consecutive (the boundary quadrature). Then one neighbour query around the owner
+// serves all its points, and a point repeated in a block (a corner two cells share) is
+// evaluated once.
 // Value: double, or float for storage in single precision (the rows are evaluated in
 // double and rounded as they are stored).
 template <class Value>
 void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& points, std::vector<Index>& row_offset,
                          std::vector<Index>& col, std::vector<Value>& psi,
-                         const std::function<std::string(std::size_t)>& label, const std::vector<char>& rows = {}) {
+                         const std::function<std::string(std::size_t)>& label, const std::vector<char>& rows = {},
+                         const std::vector<Index>& owner = {}) {
   const auto selected = [&](std::size_t p) { return rows.empty() || rows[p] != 0; };
   constexpr std::size_t block = 512;
   const std::size_t m = points.size();
   const std::size_t n_blocks = (m + block - 1) / block;
+  const std::vector<Vec3>& X = rk.points();
   std::vector<CsrPiece<Value>> pieces(n_blocks);
   FirstError error;
 #pragma omp parallel
   {
     ShapeValues values;
+    BlockPointValues stored;
+    CandidateSet near_owner;
 #pragma omp for schedule(dynamic, 1)
     for (std::size_t b = 0; b < n_blocks; ++b) {
       auto& piece = pieces[b];
-      for (std::size_t p = b * block; p < std::min(m, (b + 1) * block); ++p) {
+      const std::size_t end = std::min(m, (b + 1) * block);
+      stored.clear();
+      std::size_t group_end = b * block;  // the current owner's points end here
+      for (std::size_t p = b * block; p < end; ++p) {
         if (!selected(p)) {
           piece.length.push_back(0);
           continue;
         }
-        if (!rk.evaluate(points[p], values, false)) {
+        if (owner.empty()) {
+          if (!rk.evaluate(points[p], values, false)) {
+            error.record(static_cast<Index>(p), "");
+            break;
+          }
+          piece.length.push_back(static_cast<Index>(values.ids.size()));
+          piece.col.insert(piece.col.end(), values.ids.begin(), values.ids.end());
+          piece.value.insert(piece.value.end(), values.psi.begin(), values.psi.end());
+          continue;
+        }
+        bool have_candidates = p < group_end;
+        const Vec3& centre = X[static_cast<std::size_t>(owner[p])];
+        const auto owner_candidates = [&]() -> const CandidateSet& {
+          if (!have_candidates) {
+            double reach = 0.0;
+            for (group_end = p; group_end < end && owner[group_end] == owner[p]; ++group_end)
+              reach = std::max(reach, (points[group_end] - centre).norm());
+            rk.candidates(centre, reach, near_owner);
+            have_candidates = true;
+          }
+          return near_owner;
+        };
+        std::size_t begin = 0, length = 0;
+        if (!stored.find_or_evaluate(rk, points[p], owner_candidates, values, begin, length)) {
           error.record(static_cast<Index>(p), "");
           break;
         }
-        piece.length.push_back(static_cast<Index>(values.ids.size()));
-        piece.col.insert(piece.col.end(), values.ids.begin(), values.ids.end());
-        piece.value.insert(piece.value.end(), values.psi.begin(), values.psi.end());
+        piece.length.push_back(static_cast<Index>(length));
+        for (std::size_t k = begin; k < begin + length; ++k) {
+          piece.col.push_back(stored.id(k));
+          piece.value.push_back(static_cast<Value>(stored.psi(k)));
+        }
       }
     }
   }
@@ -489,9 +525,10 @@ BoundaryQuadrature build_boundary_quadrature(const particles::Cloud& cloud, cons
     q.owner.insert(q.owner.end(), quadrature.point.size(), L);
     q.surface_mask.insert(q.surface_mask.end(), quadrature.tag.begin(), quadrature.tag.end());
   }
-  shape_function_rows(rk, q.point, q.row_offset, q.col, q.psi, [&](std::size_t p) {
-    return particle_label(cloud, q.owner[p]) + " (a boundary quadrature point)";
-  });
+  shape_function_rows(
+      rk, q.point, q.row_offset, q.col, q.psi,
+      [&](std::size_t p) { return particle_label(cloud, q.owner[p]) + " (a boundary quadrature point)"; }, {},
+      q.owner);
   return q;
 }
 
