@@ -117,6 +117,26 @@ struct FaceRecord {
   std::int32_t local_face;
 };
 
+// Sorts the face records by key, then element: bucketed by the smallest node id (a
+// counting sort, linear), then each bucket's few records (the faces at one node) by the
+// whole order. The same result as one comparison sort of all of them, which took most
+// of the cloud's set-up at 1e6 particles (six records per hexahedron).
+void sort_faces(std::vector<FaceRecord>& faces, std::size_t n_particles) {
+  const auto before = [](const FaceRecord& a, const FaceRecord& b) {
+    return a.key != b.key ? a.key < b.key : a.element < b.element;
+  };
+  std::vector<std::size_t> start(n_particles + 1, 0);
+  for (const FaceRecord& r : faces) ++start[static_cast<std::size_t>(r.key[0]) + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<FaceRecord> sorted(faces.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const FaceRecord& r : faces) sorted[fill[static_cast<std::size_t>(r.key[0])]++] = r;
+  for (std::size_t i = 0; i < n_particles; ++i)
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[i]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[i + 1]), before);
+  faces = std::move(sorted);
+}
+
 // Faces of exactly one element are the body's surface (a conforming mesh shares
 // every interior face between two elements).
 void find_boundary_faces(Cloud& cloud) {
@@ -133,9 +153,7 @@ void find_boundary_faces(Cloud& cloud) {
       faces.push_back(r);
     }
   }
-  std::sort(faces.begin(), faces.end(), [](const FaceRecord& a, const FaceRecord& b) {
-    return a.key != b.key ? a.key < b.key : a.element < b.element;
-  });
+  sort_faces(faces, cloud.size());
 
   std::vector<FaceRecord> boundary;
   for (std::size_t i = 0; i < faces.size();) {
@@ -183,30 +201,37 @@ void find_boundary_faces(Cloud& cloud) {
 void measure_dual_cells(Cloud& cloud) {
   const int n = static_cast<int>(cloud.size());
   const DualCells cells(cloud);
-  std::vector<DualFacet> facets;
   cloud.volume.assign(n, 0.0);
+  std::vector<Vec3> area_vector(n, Vec3::Zero());
+  std::vector<double> area(n, 0.0);
+  // Each particle's cell on its own (in parallel); the lists below in particle order.
+#pragma omp parallel
+  {
+    std::vector<DualFacet> facets;
+#pragma omp for schedule(static)
+    for (std::int32_t i = 0; i < n; ++i) {
+      cloud.volume[i] = cells.volume(i, facets);
+      for (const DualFacet& f : facets) {
+        if (!f.on_boundary) continue;
+        area_vector[i] += f.area;
+        area[i] += f.area.norm();
+      }
+    }
+  }
   cloud.boundary_particles.clear();
   cloud.boundary_normal.clear();
   cloud.boundary_area.clear();
   cloud.boundary_index.assign(n, -1);
   for (std::int32_t i = 0; i < n; ++i) {
-    cloud.volume[i] = cells.volume(i, facets);
     if (!(cloud.volume[i] > 0.0)) {
       fail(cloud, "the dual cell of particle " + std::to_string(i) + " has non-positive volume " +
                       std::to_string(cloud.volume[i]));
     }
-    Vec3 area_vector = Vec3::Zero();
-    double area = 0.0;
-    for (const DualFacet& f : facets) {
-      if (!f.on_boundary) continue;
-      area_vector += f.area;
-      area += f.area.norm();
-    }
-    if (area == 0.0) continue;
+    if (area[i] == 0.0) continue;
     cloud.boundary_index[i] = static_cast<std::int32_t>(cloud.boundary_particles.size());
     cloud.boundary_particles.push_back(i);
-    cloud.boundary_normal.push_back(area_vector.normalized());
-    cloud.boundary_area.push_back(area);
+    cloud.boundary_normal.push_back(area_vector[i].normalized());
+    cloud.boundary_area.push_back(area[i]);
   }
 }
 
