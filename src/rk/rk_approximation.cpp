@@ -200,26 +200,22 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
   // radius for a ball). What is dropped has phi_I = 0 at every such point, so the
   // evaluations give the same result, bit for bit, from a shorter list.
   const double slack = 1.0 + 1e-9;
-  found.erase(std::remove_if(found.begin(), found.end(),
-                             [&](const std::pair<Index, double>& c) {
-                               const auto i = static_cast<std::size_t>(c.first);
-                               const double b = metric_.empty() ? a_[i] : min_axis_[i];
-                               return std::sqrt(squared_normalized_distance(c.first, centre)) >=
-                                      (1.0 + reach / b) * slack;
-                             }),
-              found.end());
-  // Sorted by id after the filter, which keeps the order of what it keeps.
-  NeighborSearch::sort_by_id(found);
-  const std::size_t m = found.size();
-  out.id.resize(m);
+  out.id.clear();
+  for (const auto& c : found) {
+    const auto i = static_cast<std::size_t>(c.first);
+    const double b = metric_.empty() ? a_[i] : min_axis_[i];
+    if (std::sqrt(squared_normalized_distance(c.first, centre)) < (1.0 + reach / b) * slack) out.id.push_back(c.first);
+  }
+  // Sorted by id (the ids alone: a quarter of the bytes of the query's pairs).
+  std::sort(out.id.begin(), out.id.end());
+  const std::size_t m = out.id.size();
   out.x.resize(m);
   out.y.resize(m);
   out.z.resize(m);
   for (auto& g : out.g) g.resize(m);
   for (std::size_t k = 0; k < m; ++k) {
-    const Index id = found[k].first;
+    const Index id = out.id[k];
     const Vec3& X = X_[static_cast<std::size_t>(id)];
-    out.id[k] = id;
     out.x[k] = X.x();
     out.y[k] = X.y();
     out.z[k] = X.z();
