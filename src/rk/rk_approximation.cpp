@@ -204,7 +204,8 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
   for (const auto& c : found) {
     const auto i = static_cast<std::size_t>(c.first);
     const double b = metric_.empty() ? a_[i] : min_axis_[i];
-    if (std::sqrt(squared_normalized_distance(c.first, centre)) < (1.0 + reach / b) * slack) out.id.push_back(c.first);
+    const double limit = (1.0 + reach / b) * slack;  // q_I(centre) must be below this
+    if (squared_normalized_distance(c.first, centre) < limit * limit) out.id.push_back(c.first);
   }
   // Sorted by id (the ids alone: a quarter of the bytes of the query's pairs).
   std::sort(out.id.begin(), out.id.end());
