@@ -18,6 +18,10 @@ struct PointsAdaptor {
 };
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>,
                                                    PointsAdaptor, 3, Index>;
+
+void sort_by_id(std::vector<std::pair<Index, double>>& result) {
+  std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
 }  // namespace
 
 struct NeighborSearch::Tree {
@@ -41,10 +45,6 @@ void NeighborSearch::query_unordered(const Vec3& x, double radius,
   nanoflann::SearchParams params;
   params.sorted = false;
   tree_->index.radiusSearch(x.data(), radius * radius, result, params);  // squared radius
-}
-
-void NeighborSearch::sort_by_id(std::vector<std::pair<Index, double>>& result) {
-  std::sort(result.begin(), result.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 }
 
 void NeighborSearch::query(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const {

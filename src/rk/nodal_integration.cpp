@@ -11,7 +11,6 @@
 #endif
 
 #include <array>
-#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <tuple>

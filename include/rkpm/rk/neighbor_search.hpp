@@ -30,7 +30,6 @@ class NeighborSearch {
   // filters the result and then sorts what is left by id (sorting thousands of
   // candidates of which a few dozen survive cost more than the query).
   void query_unordered(const Vec3& x, double radius, std::vector<std::pair<Index, double>>& result) const;
-  static void sort_by_id(std::vector<std::pair<Index, double>>& result);
 
   // The nearest point to x and its squared distance; among points at exactly that
   // distance, the lowest id (so the answer does not depend on the tree's layout).

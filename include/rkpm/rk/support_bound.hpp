@@ -24,7 +24,6 @@ class SupportBound {
 
   // An upper bound of a_I over every particle with |X_I - c| < a_I + reach.
   double near(const Vec3& c, double reach) const;
-  double global() const { return a_max_; }
 
  private:
   int cell_index(int axis, double coordinate) const;
