@@ -135,6 +135,7 @@ RKApproximation::RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids s
     : RKApproximation(X, std::move(supports.radius), settings) {
   metric_ = std::move(supports.metric);
   min_axis_ = std::move(supports.min_axis);
+  if (!metric_.empty()) grid_ = EllipsoidGrid(X_, metric_, a_, min_axis_);
 }
 
 SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, const RKSettings& settings) {
@@ -190,22 +191,43 @@ bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradie
 }
 
 void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet& out) const {
-  auto& found = out.found;
   // A point within `reach` of the centre is reached only by particles within
   // a_I + reach of the centre, a_I at most the largest support near it; the relative
   // slack covers the rounding of that bound.
-  search_.query_unordered(centre, (bound_.near(centre, reach) + reach) * (1.0 + 1e-9), found);
+  const double ball = (bound_.near(centre, reach) + reach) * (1.0 + 1e-9);
   // Of those, keep the ones whose own support reaches that far: q_I is a norm, so
   // q_I(x) <= q_I(centre) + reach / b_I with b_I the support's smallest semi-axis (its
   // radius for a ball). What is dropped has phi_I = 0 at every such point, so the
   // evaluations give the same result, bit for bit, from a shorter list.
   const double slack = 1.0 + 1e-9;
   out.id.clear();
-  for (const auto& c : found) {
-    const auto i = static_cast<std::size_t>(c.first);
-    const double b = metric_.empty() ? a_[i] : min_axis_[i];
-    const double limit = (1.0 + reach / b) * slack;  // q_I(centre) must be below this
-    if (squared_normalized_distance(c.first, centre) < limit * limit) out.id.push_back(c.first);
+  if (!grid_.empty() && grid_.covers(reach)) {
+    // Ellipsoids: the grid's rows (rk/ellipsoid_grid.hpp), tested in the order it
+    // stores them, from contiguous arrays. A refined thin wall's ball holds several
+    // times the particles its supports can reach; on the 1e6-particle RBC shell the
+    // set-up took 31 s this way against 49 s through the tree (docs/performance.md).
+    grid_.ranges(centre, reach, ball, out.ranges);
+    const auto& g = grid_.g();
+    const double *gx = grid_.x().data(), *gy = grid_.y().data(), *gz = grid_.z().data();
+    const float* inv_b = grid_.inverse_min_axis().data();
+    const Index* order = grid_.order().data();
+    const double widened = slack * (1.0 + grid_.test_slack());
+    for (const auto& [first, last] : out.ranges)
+      for (std::uint32_t k = first; k < last; ++k) {
+        const double q2 = quadratic_form(g[0][k], g[1][k], g[2][k], g[3][k], g[4][k], g[5][k], centre.x() - gx[k],
+                                         centre.y() - gy[k], centre.z() - gz[k]);
+        const double limit = (1.0 + reach * inv_b[k]) * widened;
+        if (q2 < limit * limit) out.id.push_back(order[k]);
+      }
+  } else {
+    auto& found = out.found;
+    search_.query_unordered(centre, ball, found);
+    for (const auto& c : found) {
+      const auto i = static_cast<std::size_t>(c.first);
+      const double b = metric_.empty() ? a_[i] : min_axis_[i];
+      const double limit = (1.0 + reach / b) * slack;  // q_I(centre) must be below this
+      if (squared_normalized_distance(c.first, centre) < limit * limit) out.id.push_back(c.first);
+    }
   }
   // Sorted by id (the ids alone: a quarter of the bytes of the query's pairs).
   std::sort(out.id.begin(), out.id.end());

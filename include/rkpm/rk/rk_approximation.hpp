@@ -18,11 +18,13 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
+#include "rkpm/rk/ellipsoid_grid.hpp"
 #include "rkpm/rk/kernel.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/rk/support_bound.hpp"
 
 #include <array>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -60,6 +62,7 @@ struct CandidateSet {
   // G_I's distinct entries 00, 11, 22, 01, 02, 12 (a ball: 1/a_I^2 on the diagonal).
   std::array<std::vector<double>, 6> g;
   std::vector<std::pair<Index, double>> found;  // the tree query's buffer
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;  // the grid query's buffer
   std::size_t size() const { return id.size(); }
 };
 
@@ -147,6 +150,7 @@ class RKApproximation {
   RKSettings settings_;
   NeighborSearch search_;
   SupportBound bound_;  // the largest a_I near a point, for the query radius
+  EllipsoidGrid grid_;  // ellipsoidal supports: the query that follows their shape
 };
 
 }  // namespace rkpm::rk
