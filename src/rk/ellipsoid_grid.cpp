@@ -5,11 +5,7 @@
 
 namespace rkpm::rk {
 
-namespace {
-std::array<double, 6> entries(const Mat3& G) { return {G(0, 0), G(1, 1), G(2, 2), G(1, 0), G(2, 0), G(2, 1)}; }
-}  // namespace
-
-EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Mat3>& metric,
+EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<SymmetricEntries>& metric,
                              const std::vector<double>& radius, const std::vector<double>& min_axis) {
   const std::size_t n = X.size();
   if (n == 0) return;
@@ -59,20 +55,13 @@ EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Mat3>
     std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < n; ++i) order_[next[bucket_of[i]]++] = static_cast<Index>(i);
   }
-  x_.resize(n);
-  y_.resize(n);
-  z_.resize(n);
   inv_min_axis_.resize(n);
   for (auto& g : g_) g.resize(n);
   double worst_condition = 1.0;  // of G_J: (longest / shortest semi-axis)^2
   for (std::size_t k = 0; k < n; ++k) {
     const auto i = static_cast<std::size_t>(order_[k]);
-    x_[k] = X[i].x();
-    y_[k] = X[i].y();
-    z_[k] = X[i].z();
     inv_min_axis_[k] = static_cast<float>(1.0 / min_axis[i]);
-    const auto e = entries(metric[i]);
-    for (int c = 0; c < 6; ++c) g_[c][k] = static_cast<float>(e[c]);
+    for (int c = 0; c < 6; ++c) g_[c][k] = static_cast<float>(metric[i][c]);
     worst_condition = std::max(worst_condition, radius[i] * radius[i] / (min_axis[i] * min_axis[i]));
   }
   // r^T G r from entries rounded to float differs from the exact form by at most a few
@@ -86,11 +75,11 @@ EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Mat3>
     const std::size_t k =
         coarse_of_bucket(bucket_index(0, X[i].x()), bucket_index(1, X[i].y()), bucket_index(2, X[i].z()));
     // (G^-1)_ii from the cofactors: G is symmetric positive definite.
-    const Mat3& G = metric[i];
-    const double det = G.determinant();
-    const double c00 = G(1, 1) * G(2, 2) - G(1, 2) * G(2, 1);
-    const double c11 = G(0, 0) * G(2, 2) - G(0, 2) * G(2, 0);
-    const double c22 = G(0, 0) * G(1, 1) - G(0, 1) * G(1, 0);
+    const auto& g = metric[i];  // 00, 11, 22, 01, 02, 12
+    const double c00 = g[1] * g[2] - g[5] * g[5];
+    const double c11 = g[0] * g[2] - g[4] * g[4];
+    const double c22 = g[0] * g[1] - g[3] * g[3];
+    const double det = g[0] * c00 - g[3] * (g[3] * g[2] - g[5] * g[4]) + g[4] * (g[3] * g[5] - g[1] * g[4]);
     const std::array<double, 3> span{std::sqrt(c00 / det), std::sqrt(c11 / det), std::sqrt(c22 / det)};
     for (int a = 0; a < 3; ++a) own[k][a] = std::max(own[k][a], std::min(span[a], radius[i]));
   }

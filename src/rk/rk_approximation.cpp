@@ -118,7 +118,7 @@ struct MonomialBasis {
 }  // namespace
 
 RKApproximation::RKApproximation(const std::vector<Vec3>& X, std::vector<double> support_radius, RKSettings settings)
-    : X_(X), a_(std::move(support_radius)), settings_(settings), search_(X) {
+    : X_(X), a_(std::move(support_radius)), settings_(settings) {
   if (a_.size() != X_.size()) throw std::invalid_argument("RKApproximation: one support radius per particle required");
   for (std::size_t i = 0; i < a_.size(); ++i) {
     if (!(a_[i] > 0.0) || !std::isfinite(a_[i]))
@@ -126,6 +126,12 @@ RKApproximation::RKApproximation(const std::vector<Vec3>& X, std::vector<double>
     a_max_ = std::max(a_max_, a_[i]);
   }
   bound_ = SupportBound(X_, a_);
+  if (settings_.shape == SupportShape::Sphere) tree();
+}
+
+const NeighborSearch& RKApproximation::tree() const {
+  std::call_once(tree_built_, [this] { search_ = std::make_unique<NeighborSearch>(X_); });
+  return *search_;
 }
 
 RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings settings)
@@ -133,7 +139,9 @@ RKApproximation::RKApproximation(const particles::Cloud& cloud, RKSettings setti
 
 RKApproximation::RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings)
     : RKApproximation(X, std::move(supports.radius), settings) {
-  metric_ = std::move(supports.metric);
+  metric_.resize(supports.metric.size());
+  for (std::size_t i = 0; i < metric_.size(); ++i) metric_[i] = symmetric_entries(supports.metric[i]);
+  supports.metric = {};
   min_axis_ = std::move(supports.min_axis);
   if (!metric_.empty()) grid_ = EllipsoidGrid(X_, metric_, a_, min_axis_);
 }
@@ -160,8 +168,7 @@ std::array<double, 6> RKApproximation::metric_entries(Index id) const {
     const double g = 1.0 / (a_[i] * a_[i]);
     return {g, g, g, 0.0, 0.0, 0.0};
   }
-  const Mat3& G = metric_[i];
-  return {G(0, 0), G(1, 1), G(2, 2), G(1, 0), G(2, 0), G(2, 1)};
+  return metric_[i];
 }
 
 double RKApproximation::squared_normalized_distance(Index id, const Vec3& x) const {
@@ -182,7 +189,10 @@ Vec3 RKApproximation::kernel_gradient(Index id, const Vec3& x, double q, double 
   if (q <= 0.0) return Vec3::Zero();
   // d q / d x = r / (a |r|) for a ball, G r / q for an ellipsoid.
   if (metric_.empty()) return dw_dq / (a_[i] * r.norm()) * r;
-  return dw_dq / q * (metric_[i] * r);
+  const auto& g = metric_[i];  // 00, 11, 22, 01, 02, 12
+  const Vec3 Gr(g[0] * r.x() + g[3] * r.y() + g[4] * r.z(), g[3] * r.x() + g[1] * r.y() + g[5] * r.z(),
+                g[4] * r.x() + g[5] * r.y() + g[2] * r.z());
+  return dw_dq / q * Gr;
 }
 
 bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradient) const {
@@ -208,20 +218,20 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
     // set-up took 31 s this way against 49 s through the tree (docs/performance.md).
     grid_.ranges(centre, reach, ball, out.ranges);
     const auto& g = grid_.g();
-    const double *gx = grid_.x().data(), *gy = grid_.y().data(), *gz = grid_.z().data();
     const float* inv_b = grid_.inverse_min_axis().data();
     const Index* order = grid_.order().data();
     const double widened = slack * (1.0 + grid_.test_slack());
     for (const auto& [first, last] : out.ranges)
       for (std::uint32_t k = first; k < last; ++k) {
-        const double q2 = quadratic_form(g[0][k], g[1][k], g[2][k], g[3][k], g[4][k], g[5][k], centre.x() - gx[k],
-                                         centre.y() - gy[k], centre.z() - gz[k]);
+        const Vec3& P = X_[static_cast<std::size_t>(order[k])];
+        const double q2 = quadratic_form(g[0][k], g[1][k], g[2][k], g[3][k], g[4][k], g[5][k], centre.x() - P.x(),
+                                         centre.y() - P.y(), centre.z() - P.z());
         const double limit = (1.0 + reach * inv_b[k]) * widened;
         if (q2 < limit * limit) out.id.push_back(order[k]);
       }
   } else {
     auto& found = out.found;
-    search_.query_unordered(centre, ball, found);
+    tree().query_unordered(centre, ball, found);
     for (const auto& c : found) {
       const auto i = static_cast<std::size_t>(c.first);
       const double b = metric_.empty() ? a_[i] : min_axis_[i];

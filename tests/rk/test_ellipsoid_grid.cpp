@@ -83,7 +83,9 @@ std::vector<Vec3> centres(const std::vector<Vec3>& X, std::mt19937& rng, int cou
 
 void expect_no_particle_missed(const particles::Cloud& cloud, double reach_fraction) {
   const auto supports = ellipsoidal_supports(cloud, 2.0);
-  const EllipsoidGrid grid(cloud.X, supports.metric, supports.radius, supports.min_axis);
+  std::vector<SymmetricEntries> metric;
+  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
+  const EllipsoidGrid grid(cloud.X, metric, supports.radius, supports.min_axis);
   const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
   const double reach = reach_fraction * a_max;
   ASSERT_TRUE(grid.covers(reach));

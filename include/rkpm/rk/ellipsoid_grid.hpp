@@ -1,28 +1,31 @@
 // The particles whose ellipsoidal supports can reach points near a centre, found
-// through a bucket grid shaped by the supports instead of a Euclidean ball.
+// through a bucket grid instead of a kd-tree ball.
 //
 // Why: a ball query around c must reach a_max + reach, a_max the longest semi-axis near
-// c. In a refined shell that keeps its layers, the longest semi-axis is the one through
+// c. In a refined shell that keeps its layers the longest semi-axis is the one across
 // the wall while the supports are short along it: at 1e6 particles (semi-axes about
-// 0.09 um along the wall, 0.25 um across it) the ball held about 750 particles for the
-// 30-65 a point needs, and the set-up grew faster than the particle count.
+// 0.09 um along the wall, 0.25 um across it) the tree's ball held about 750 particles
+// for the 30-65 a point needs, gathered one by one from wherever the tree kept them.
 //
 // How: an ellipsoid x^T G x <= 1 spans sqrt((G^-1)_ii) along axis i, so a particle
 // whose support reaches a point p with |p - c| <= reach has |X_J,i - c_i| <=
 // sqrt((G_J^-1)_ii) + reach on every axis. Every coarse cell (side C >= a_max + the
 // largest reach served) holds the largest of those spans over the particles in the
-// 3 x 3 x 3 cells around it, so the box of those half-widths (plus reach) around c holds
-// every particle that matters. On a wall that lies along the axes the box is about as
-// narrow as the supports along the wall; on a tilted wall it widens towards the ball's,
-// and the query then takes the Euclidean ball's box where that is smaller, so it never
-// visits more than a ball would.
+// 3 x 3 x 3 cells around it; the query visits the box of those half-widths (plus reach)
+// around c, cut to the Euclidean ball, so it never needs more than the ball.
 //
-// The particles are sorted by bucket (side s, C a multiple of s), so one row of buckets
-// along x is one contiguous range; a query visits the rows of the box. The positions,
-// metrics and smallest semi-axes are copied in that order, so a caller's test over a
-// range reads contiguous arrays; the metrics in float, which a test with a limit widened
-// by test_slack() tolerates (a looser test only keeps a few more particles whose kernel
-// is zero, which the evaluation drops).
+// What that box saves depends on how the supports lie: where their long axes follow a
+// coordinate axis it is as narrow as the supports across the others; on the RBC shell
+// the layers' edges follow the cubed sphere's unit directions, up to about 40 degrees
+// from the wall's normal, and the box is about the ball's. What the grid gains there (docs/
+// performance.md: the 1e6-particle shell's set-up 49 -> 31 s) is its layout: the
+// particles are sorted by bucket (side s, C a multiple of s), one row of buckets along
+// x is one contiguous range, and the supports' metrics and smallest semi-axes are
+// copied in that order, so the test over a range streams contiguous arrays (the
+// positions are read through order(): copying them too measured no faster). The
+// metrics are stored in float; a caller's test widens its limit by test_slack(), which
+// covers that rounding (a looser test only keeps a few more particles whose kernel is
+// zero, which the evaluation drops).
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -34,13 +37,20 @@
 
 namespace rkpm::rk {
 
+// A symmetric matrix's distinct entries 00, 11, 22, 01, 02, 12: how the supports'
+// metrics are stored (two thirds of a Mat3).
+using SymmetricEntries = std::array<double, 6>;
+inline SymmetricEntries symmetric_entries(const Mat3& G) {
+  return {G(0, 0), G(1, 1), G(2, 2), G(1, 0), G(2, 0), G(2, 1)};
+}
+
 class EllipsoidGrid {
  public:
   EllipsoidGrid() = default;
   // metric[J] = G_J, radius[J] its longest semi-axis, min_axis[J] its shortest. Keeps
   // copies of what the queries read, in bucket order.
-  EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Mat3>& metric, const std::vector<double>& radius,
-                const std::vector<double>& min_axis);
+  EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<SymmetricEntries>& metric,
+                const std::vector<double>& radius, const std::vector<double>& min_axis);
 
   bool empty() const { return order_.empty(); }
   // Whether a query with this reach stays within one coarse neighbourhood.
@@ -52,11 +62,8 @@ class EllipsoidGrid {
   // caller tests each particle. Requires covers(reach).
   void ranges(const Vec3& c, double reach, double ball, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const;
 
-  // The particles in bucket order, and what the queries' callers test them with.
+  // The particles in bucket order, and the supports' shapes in that order.
   const std::vector<Index>& order() const { return order_; }
-  const std::vector<double>& x() const { return x_; }
-  const std::vector<double>& y() const { return y_; }
-  const std::vector<double>& z() const { return z_; }
   // G_J's distinct entries 00, 11, 22, 01, 02, 12.
   // Stored in float (the grid is kept beside the operators while they are built): a
   // caller's test widens its limit by test_slack(), which covers that rounding.
@@ -80,7 +87,6 @@ class EllipsoidGrid {
   std::array<int, 3> coarse_dims_{1, 1, 1};  // coarse cells along each axis
   std::vector<std::uint32_t> start_;         // bucket b holds order_[start_[b] .. start_[b+1])
   std::vector<Index> order_;
-  std::vector<double> x_, y_, z_;
   std::vector<float> inv_min_axis_;
   std::array<std::vector<float>, 6> g_;
   double test_slack_ = 0.0;

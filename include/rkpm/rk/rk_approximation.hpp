@@ -24,6 +24,8 @@
 #include "rkpm/rk/support_bound.hpp"
 
 #include <array>
+#include <memory>
+#include <mutex>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -144,11 +146,15 @@ class RKApproximation {
 
   const std::vector<Vec3>& X_;
   std::vector<double> a_;
-  std::vector<Mat3> metric_;     // empty for spherical supports
+  std::vector<SymmetricEntries> metric_;  // G_I's distinct entries; empty for spherical supports
   std::vector<double> min_axis_;  // the ellipsoids' smallest semi-axes
   double a_max_ = 0.0;
   RKSettings settings_;
-  NeighborSearch search_;
+  // The kd-tree: built at once for balls, and for ellipsoids only when a query's reach is
+  // more than the grid covers (its memory is then not spent on every body).
+  const NeighborSearch& tree() const;
+  mutable std::once_flag tree_built_;
+  mutable std::unique_ptr<NeighborSearch> search_;
   SupportBound bound_;  // the largest a_I near a point, for the query radius
   EllipsoidGrid grid_;  // ellipsoidal supports: the query that follows their shape
 };
