@@ -143,3 +143,33 @@ TEST(EllipsoidGrid, CandidatesHoldEverySupportThatReaches) {
     }
   }
 }
+
+// The grid and the tree must give the same shape functions bit for bit: a candidate
+// list may hold extra particles, but their kernel is zero and the sums run over the
+// same particles in the same (id) order. The tree answers a reach beyond the grid's.
+TEST(EllipsoidGrid, ShapeFunctionsAreTheTreesBitForBit) {
+  const auto cloud = thin_shell();
+  RKSettings settings;
+  settings.shape = SupportShape::Ellipsoid;
+  const RKApproximation rk(cloud, settings);
+  const auto supports = ellipsoidal_supports(cloud, 2.0);
+  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+  CandidateSet by_grid, by_tree;
+  ShapeValues a, b;
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < cloud.size(); i += 7) {
+    const Vec3 x = cloud.X[i] + Vec3(0.01, -0.02, 0.015) * a_max;
+    rk.candidates(x, 0.0, by_grid);
+    rk.candidates(x, 3.0 * a_max, by_tree);
+    ASSERT_GT(by_tree.size(), by_grid.size());  // the tree's list is the longer one
+    ASSERT_TRUE(rk.evaluate_among(x, by_grid, a, true));
+    ASSERT_TRUE(rk.evaluate_among(x, by_tree, b, true));
+    ASSERT_EQ(a.ids, b.ids) << "particle " << i;
+    for (std::size_t k = 0; k < a.ids.size(); ++k) {
+      EXPECT_EQ(a.psi[k], b.psi[k]);
+      EXPECT_EQ(a.grad[k], b.grad[k]);
+    }
+    ++compared;
+  }
+  EXPECT_GT(compared, 100u);
+}
