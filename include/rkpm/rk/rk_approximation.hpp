@@ -65,6 +65,7 @@ struct CandidateSet {
   std::array<std::vector<double>, 6> g;
   std::vector<std::pair<Index, double>> found;  // the tree query's buffer
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;  // the grid query's buffer
+  std::vector<Index> sort_buffer;                               // the sort's other half
   std::size_t size() const { return id.size(); }
 };
 
