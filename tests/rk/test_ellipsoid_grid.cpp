@@ -115,16 +115,24 @@ TEST(EllipsoidGrid, MissesNoSupportInAJitteredBlock) {
   expect_no_particle_missed(test::jittered_block(6, 0.25), 0.4);
 }
 
+// The thin shell's ellipsoidal supports and their approximation.
+class EllipsoidGridOnAThinWall : public ::testing::Test {
+ protected:
+  static RKSettings ellipsoids() {
+    RKSettings settings;
+    settings.shape = SupportShape::Ellipsoid;
+    return settings;
+  }
+  const particles::Cloud cloud = thin_shell();
+  const SupportEllipsoids supports = ellipsoidal_supports(cloud, 2.0);
+  const RKApproximation rk{cloud, ellipsoids()};
+  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+};
+
 // The contract of RKApproximation::candidates, through the grid and (for a reach the
 // grid does not cover) through the tree: every particle that reaches a point within
 // `reach` of the centre is a candidate, once, and the ids are sorted.
-TEST(EllipsoidGrid, CandidatesHoldEverySupportThatReaches) {
-  const auto cloud = thin_shell();
-  RKSettings settings;
-  settings.shape = SupportShape::Ellipsoid;
-  const RKApproximation rk(cloud, settings);
-  const auto supports = ellipsoidal_supports(cloud, 2.0);
-  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+TEST_F(EllipsoidGridOnAThinWall, CandidatesHoldEverySupportThatReaches) {
   std::mt19937 rng(11);
   CandidateSet set;
   for (double reach : {0.0, 0.25 * a_max, 3.0 * a_max}) {
@@ -147,13 +155,7 @@ TEST(EllipsoidGrid, CandidatesHoldEverySupportThatReaches) {
 // The grid and the tree must give the same shape functions bit for bit: a candidate
 // list may hold extra particles, but their kernel is zero and the sums run over the
 // same particles in the same (id) order. The tree answers a reach beyond the grid's.
-TEST(EllipsoidGrid, ShapeFunctionsAreTheTreesBitForBit) {
-  const auto cloud = thin_shell();
-  RKSettings settings;
-  settings.shape = SupportShape::Ellipsoid;
-  const RKApproximation rk(cloud, settings);
-  const auto supports = ellipsoidal_supports(cloud, 2.0);
-  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+TEST_F(EllipsoidGridOnAThinWall, ShapeFunctionsAreTheTreesBitForBit) {
   CandidateSet by_grid, by_tree;
   ShapeValues a, b;
   std::size_t compared = 0;
