@@ -17,10 +17,10 @@
 // What that box saves depends on how the supports lie: where their long axes follow a
 // coordinate axis it is as narrow as the supports across the others; on the RBC shell
 // the layers' edges follow the cubed sphere's unit directions, up to about 40 degrees
-// from the wall's normal, and the box is about the ball's. What the grid gains there (docs/
-// performance.md: the 1e6-particle shell's set-up 49 -> 31 s) is its layout: the
-// particles are sorted by bucket (side s, C a multiple of s), one row of buckets along
-// x is one contiguous range, and the supports' metrics and smallest semi-axes are
+// from the wall's normal, and the box is about the ball's. What the grid gains there
+// (docs/performance.md: the 1e6-particle shell's set-up 49 -> 28 s, with the caller's
+// branch-free filter) is its layout: the particles are sorted by bucket (side s, C a
+// multiple of s), one row of buckets along x is one contiguous range, and the supports' metrics and smallest semi-axes are
 // copied in that order, so the test over a range streams contiguous arrays (the
 // positions are read through order(): copying them too measured no faster). The
 // metrics are stored in float; a caller's test widens its limit by test_slack(), which
@@ -71,11 +71,10 @@ class EllipsoidGrid {
   const std::vector<float>& inverse_min_axis() const { return inv_min_axis_; }
   double test_slack() const { return test_slack_; }
 
+ private:
   // The largest half-widths sqrt((G_J^-1)_ii) over the neighbourhood of c's coarse cell
   // (zero where no particle lies near).
   const std::array<double, 3>& spans_near(const Vec3& c) const;
-
- private:
   int bucket_index(int axis, double coordinate) const;
   std::size_t coarse_of_bucket(int bx, int by, int bz) const;
 

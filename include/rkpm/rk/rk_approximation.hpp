@@ -24,9 +24,9 @@
 #include "rkpm/rk/support_bound.hpp"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <mutex>
-#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
