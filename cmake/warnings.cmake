@@ -4,6 +4,10 @@ add_library(rkpm_options INTERFACE)
 # does not inherit them.
 target_compile_options(rkpm_options INTERFACE
   $<BUILD_INTERFACE:-Wall -Wextra -Wpedantic $<$<CXX_COMPILER_ID:GNU>:-Wshadow=local> -Wnon-virtual-dtor>)
+# GCC notes that a function returning a 32-byte generic vector (rk/row_lanes.hpp) has
+# another ABI with AVX than without. Those functions are inline and never cross a
+# library boundary, so the note is noise.
+target_compile_options(rkpm_options INTERFACE $<$<CXX_COMPILER_ID:GNU>:-Wno-psabi>)
 if(RKPM_NATIVE)
   target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:-march=native>)
 endif()

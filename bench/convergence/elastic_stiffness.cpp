@@ -42,7 +42,7 @@ std::vector<Mat3> ElasticStiffness::diagonal_blocks() const {
   for (Index L = 0; L < gradient_.n_rows(); ++L)
     for (Index k = gradient_.row_offset[L]; k < gradient_.row_offset[L + 1]; ++k) {
       // d/dd_I of sum_L V_L sigma(sym(d_I (x) b)) b = V_L [mu (|b|^2 1 + b b^T) + lambda b b^T].
-      const Vec3 b = gradient_.entry(k);
+      const Vec3 b = gradient_.entry(L, k);
       block[gradient_.col[k]] +=
           gradient_.weight[L] * (mu * b.squaredNorm() * Mat3::Identity() + (mu + lambda) * b * b.transpose());
     }

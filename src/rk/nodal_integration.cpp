@@ -255,10 +255,29 @@ void release_freed_pages() {
 // returning the freed pages every few pieces, so a build's peak is about one copy of
 // the matrix (the pieces, then the matrix as it fills) rather than two (at 1e6
 // particles of a block, 2.9 KB per particle before, docs/performance.md).
+// Appends a piece's values as they are: one per entry.
 template <class Value>
+void append_values(const CsrPiece<Value>& piece, std::vector<Value>& out) {
+  out.insert(out.end(), piece.value.begin(), piece.value.end());
+}
+
+// Appends a piece of single-precision gradients in GradientOperator::grad_float's
+// planar order: each row's x components, then its y, then its z.
+void append_values(const CsrPiece<Vec3f>& piece, std::vector<float>& out) {
+  std::size_t k0 = 0;
+  for (const Index len : piece.length) {
+    const auto n = static_cast<std::size_t>(len);
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t m = 0; m < n; ++m) out.push_back(piece.value[k0 + m](c));
+    k0 += n;
+  }
+}
+
+template <class Value, class Out>
 void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, std::vector<Index>& col,
-          std::vector<Value>& value) {
+          std::vector<Out>& value) {
   constexpr std::size_t kPiecesPerRelease = 64;
+  constexpr std::size_t kStoredPerEntry = sizeof(Value) / sizeof(Out);
   std::size_t rows = 0, entries = 0;
   for (const auto& piece : pieces) {
     rows += piece.length.size();
@@ -266,7 +285,7 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
   }
   row_offset.assign(rows + 1, 0);
   col.reserve(entries);
-  value.reserve(entries);
+  value.reserve(entries * kStoredPerEntry);
   std::size_t r = 0, joined = 0;
   for (auto& piece : pieces) {
     for (const Index len : piece.length) {
@@ -274,7 +293,7 @@ void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, 
       ++r;
     }
     col.insert(col.end(), piece.col.begin(), piece.col.end());
-    value.insert(value.end(), piece.value.begin(), piece.value.end());
+    append_values(piece, value);
     piece = CsrPiece<Value>{};
     if (++joined % kPiecesPerRelease == 0) release_freed_pages();
   }
@@ -388,12 +407,13 @@ void CsrTranspose::build(const std::vector<Index>& row_offset, const std::vector
 
 namespace {
 
-// The smoothed gradients of every row, stored as `Stored` (Vec3 or Vec3f); each block's
-// piece is converted as it is filled, so the build never holds a double copy of a
+// The smoothed gradients of every row, built as `Stored` (Vec3 or Vec3f) and joined
+// into `grad` (op.grad, or op.grad_float in its planar order); each block's piece is
+// converted as it is filled, so the build never holds a double copy of a
 // single-precision operator.
-template <class Stored>
+template <class Stored, class Out>
 void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& rk, Integration scheme, FacetRule rule,
-                         const std::vector<char>& rows, GradientOperator& op, std::vector<Stored>& grad) {
+                         const std::vector<char>& rows, GradientOperator& op, std::vector<Out>& grad) {
   const auto n = static_cast<Index>(cloud.size());
   constexpr Index block = 1024;
   const Index n_blocks = (n + block - 1) / block;
@@ -490,9 +510,9 @@ GradientOperator build_gradient_operator(const particles::Cloud& cloud, const RK
                                          const std::vector<char>& rows, FacetRule rule) {
   GradientOperator op;
   if (precision == GradientPrecision::Float)
-    build_gradient_rows(cloud, rk, scheme, rule, rows, op, op.grad_float);
+    build_gradient_rows<Vec3f>(cloud, rk, scheme, rule, rows, op, op.grad_float);
   else
-    build_gradient_rows(cloud, rk, scheme, rule, rows, op, op.grad);
+    build_gradient_rows<Vec3>(cloud, rk, scheme, rule, rows, op, op.grad);
   return op;
 }
 

@@ -22,6 +22,7 @@
 #include "rkpm/common/types.hpp"
 #include "rkpm/particles/dual_cells.hpp"
 #include "rkpm/rk/rk_approximation.hpp"
+#include "rkpm/rk/row_lanes.hpp"
 
 #include <cstdint>
 #include <type_traits>
@@ -76,14 +77,25 @@ struct GradientOperator {
   std::vector<Index> row_offset;  // n_points + 1
   std::vector<Index> col;         // particle I of each entry
   std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m], double storage
-  std::vector<Vec3f> grad_float;  // b_I(X_L) of each entry [1/m], single-precision storage
+  // b_I(X_L) [1/m] in single precision, row by row in planar order: a row of n entries
+  // from entry k0 on holds its x components at [3 k0, 3 k0 + n), then its y, then its z,
+  // so the row kernels load several entries' components at once (rk/row_lanes.hpp).
+  std::vector<float> grad_float;
   std::vector<double> weight;     // V_L: integration weight of each row [m^3]
   Index n_columns = 0;            // particles
 
   Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
   bool single_precision() const { return !grad_float.empty(); }
-  // b_I(X_L) of entry k as stored (before the relative form's own-particle correction).
-  Vec3 entry(Index k) const { return single_precision() ? Vec3(grad_float[k].cast<double>()) : grad[k]; }
+  // Row L's single-precision entries, in planar order.
+  const float* planar_row(Index L) const { return grad_float.data() + 3 * static_cast<std::size_t>(row_offset[L]); }
+  // b_I(X_L) of entry k of row L as stored (before the relative form's own-particle
+  // correction).
+  Vec3 entry(Index L, Index k) const {
+    if (!single_precision()) return grad[k];
+    const float* b = planar_row(L);
+    const Index n = row_offset[L + 1] - row_offset[L], m = k - row_offset[L];
+    return Vec3(b[m], b[n + m], b[2 * n + m]);
+  }
 };
 
 // Points on the body's surface with their weights (outward area vectors) and the shape
@@ -199,29 +211,23 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
 template <class Stored, class Value>
 Mat3 row_gradient_of(const GradientOperator& op, const std::vector<Stored>& grad, const Value& value, Index L) {
   const Index* col = op.col.data();
-  const Stored* b = grad.data();
   const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-  // g = sum_k v_k b_k^T, one column per component of b.
-  Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
-  if constexpr (std::is_same_v<Stored, Vec3>) {
+  if constexpr (std::is_same_v<Stored, float>) {
+    return lanes::row_gradient(col + k0, op.planar_row(L), k1 - k0, value, value(L));
+  } else {
+    // g = sum_k v_k b_k^T, one column per component of b.
+    const Stored* b = grad.data();
+    Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
     for (Index k = k0; k < k1; ++k) {
       const Vec3 vk = value(col[k]);
       g0 += vk * b[k](0);
       g1 += vk * b[k](1);
       g2 += vk * b[k](2);
     }
-  } else {
-    const Vec3 vL = value(L);
-    for (Index k = k0; k < k1; ++k) {
-      const Vec3 vk = value(col[k]) - vL;
-      g0 += vk * static_cast<double>(b[k](0));
-      g1 += vk * static_cast<double>(b[k](1));
-      g2 += vk * static_cast<double>(b[k](2));
-    }
+    Mat3 g;
+    g << g0, g1, g2;
+    return g;
   }
-  Mat3 g;
-  g << g0, g1, g2;
-  return g;
 }
 
 template <class Stored>
@@ -239,18 +245,12 @@ void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, In
                  const Add& add) {
   const Mat3 M = M_in;
   const Index* col = op.col.data();
-  const Stored* b = grad.data();
   const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-  if constexpr (std::is_same_v<Stored, Vec3>) {
-    for (Index k = k0; k < k1; ++k) add(col[k], Vec3(w * (M * b[k])));
+  if constexpr (std::is_same_v<Stored, float>) {
+    lanes::scatter_row(col + k0, op.planar_row(L), k1 - k0, L, w, M, add);
   } else {
-    Vec3 row_sum = Vec3::Zero();
-    for (Index k = k0; k < k1; ++k) {
-      const Vec3 bk = b[k].template cast<double>();
-      add(col[k], Vec3(w * (M * bk)));
-      row_sum += bk;
-    }
-    add(L, Vec3(-(w * (M * row_sum))));
+    const Stored* b = grad.data();
+    for (Index k = k0; k < k1; ++k) add(col[k], Vec3(w * (M * b[k])));
   }
 }
 
@@ -305,7 +305,7 @@ template <class Entry>
 void for_each_acting_entry(const GradientOperator& op, Index L, Entry entry) {
   Vec3 row_sum = Vec3::Zero();
   for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) {
-    const Vec3 b = op.entry(k);
+    const Vec3 b = op.entry(L, k);
     entry(op.col[k], b);
     row_sum += b;
   }

@@ -1,0 +1,159 @@
+// The row kernels of the single-precision gradient operator, on vector registers.
+//
+// Why: the force pass spends most of its time in two loops over each row, the gather
+// F_L = I + sum_k (v_k - v_L) (x) b~_k and the scatter f_k += w M b~_k
+// (rk/nodal_integration.hpp). A 3-vector fills no vector register (Eigen does not
+// vectorize a Vector3d), so one entry cost 18 scalar multiplies and adds. Here:
+// - the gather keeps v_k - v_L in the first three lanes of a four-lane vector and adds
+//   one entry at a time, in the row's order: each of the nine sums is the one-entry
+//   loop's sequential sum, to the bit;
+// - the scatter forms the contributions w M b~_k of four entries at once, each lane
+//   with the one-entry loop's operations in its order, and hands them to the sink in
+//   the row's order: the same bits again.
+// The row's entries are stored component by component (all x, then all y, then all z:
+// GradientOperator's planar layout), so the scatter loads four entries' components with
+// one load each. The vectors are the compiler's generic vector types; a build for the
+// machine (RKPM_NATIVE) with AVX uses them, the portable build (SSE2, where each 4-lane
+// operation is two instructions) runs the same arithmetic one entry at a time
+// (kVectorRows). A lane's arithmetic is the same IEEE operation as the scalar one (no
+// fused multiply-add: cmake/warnings.cmake), so both forms give the bits of the
+// one-entry loops they replace (tests/rk/test_row_lanes.cpp checks both forms in every
+// build).
+//
+// Summing across lanes (lane l takes entries l, l + 4, ...) would shorten the gather's
+// dependency chains, but changes F by round-off and with it the path of a relaxation
+// (docs/relaxation.md, "Round-off moves the path"); measured on the block and the
+// shell at 1e5 it gained 3-6 % over this form (docs/performance.md).
+#pragma once
+
+#include "rkpm/common/types.hpp"
+
+#include <cstring>
+
+namespace rkpm::rk::lanes {
+
+// Whether the target has whole 4-double registers. Without them (the portable SSE2
+// build) each 4-lane operation is two instructions, and the one-entry loops measured
+// faster (docs/performance.md), so the force pass takes them there.
+#ifdef __AVX__
+inline constexpr bool kVectorRows = true;
+#else
+inline constexpr bool kVectorRows = false;
+#endif
+
+constexpr int kWidth = 4;
+using Doubles = double __attribute__((vector_size(kWidth * sizeof(double))));
+using Floats = float __attribute__((vector_size(kWidth * sizeof(float))));
+
+inline Doubles broadcast(double x) { return Doubles{x, x, x, x}; }
+
+// Four stored entries from p, widened to double.
+inline Doubles widen(const float* p) {
+  Floats f;
+  std::memcpy(&f, p, sizeof f);
+  return __builtin_convertvector(f, Doubles);
+}
+
+// M b with the association of Eigen's Matrix3d * Vector3d in a portable build (SSE2):
+// the first two components as (M_i0 b_0 + M_i1 b_1) + M_i2 b_2, the third as
+// M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
+// these kernels, which evaluates it as (w M) b, and a relaxation's path follows the
+// round-off (docs/relaxation.md, "Round-off moves the path"), so the kernels keep those
+// bits. T is double or Doubles (four entries at once).
+template <class T>
+void product(const T m[3][3], const T& b0, const T& b1, const T& b2, T out[3]) {
+  out[0] = (m[0][0] * b0 + m[0][1] * b1) + m[0][2] * b2;
+  out[1] = (m[1][0] * b0 + m[1][1] * b1) + m[1][2] * b2;
+  out[2] = m[2][0] * b0 + (m[2][1] * b1 + m[2][2] * b2);
+}
+
+// g = sum_k (v_k - v_L) (x) b~_k over a row of n entries whose components sit at
+// b[0..n), b[n..2n), b[2n..3n) and whose particles are col[0..n); value(I) gives v_I.
+// One entry at a time, in the row's order; the vector form keeps v_k - v_L in the first
+// three lanes. Either way each of the nine sums is the sequential sum, to the bit.
+template <bool Vector = kVectorRows, class Value>
+Mat3 row_gradient(const Index* col, const float* b, Index n, const Value& value, const Vec3& vL) {
+  const float* bx = b;
+  const float* by = b + n;
+  const float* bz = b + 2 * n;
+  Mat3 g;
+  if constexpr (Vector) {
+    const Doubles VL{vL(0), vL(1), vL(2), 0.0};
+    Doubles g0{0.0, 0.0, 0.0, 0.0}, g1 = g0, g2 = g0;  // columns of g
+    for (Index m = 0; m < n; ++m) {
+      const Vec3 vk = value(col[m]);
+      const Doubles v = Doubles{vk(0), vk(1), vk(2), 0.0} - VL;
+      g0 += v * broadcast(static_cast<double>(bx[m]));
+      g1 += v * broadcast(static_cast<double>(by[m]));
+      g2 += v * broadcast(static_cast<double>(bz[m]));
+    }
+    g << g0[0], g1[0], g2[0], g0[1], g1[1], g2[1], g0[2], g1[2], g2[2];
+  } else {
+    Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
+    for (Index m = 0; m < n; ++m) {
+      const Vec3 v = value(col[m]) - vL;
+      g0 += v * static_cast<double>(bx[m]);
+      g1 += v * static_cast<double>(by[m]);
+      g2 += v * static_cast<double>(bz[m]);
+    }
+    g << g0, g1, g2;
+  }
+  return g;
+}
+
+// add(col[k], (w M) b~_k) for the row's entries in order, then add(L, -((w M) sum_k b~_k))
+// (the relative form's own-particle term), with the sum over the entries in order. The
+// vector form makes four entries' contributions at once.
+template <bool Vector = kVectorRows, class Add>
+void scatter_row(const Index* col, const float* b, Index n, Index L, double w, const Mat3& M, const Add& add) {
+  const float* bx = b;
+  const float* by = b + n;
+  const float* bz = b + 2 * n;
+  double wm[3][3];  // w M
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) wm[i][j] = w * M(i, j);
+  double sx = 0.0, sy = 0.0, sz = 0.0;  // sum_k b~_k
+  Index k = 0;
+  if constexpr (Vector) {
+    Doubles m[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m[i][j] = broadcast(wm[i][j]);
+    const auto emit = [&](Index m0, int count, const Doubles& b0, const Doubles& b1, const Doubles& b2) {
+      Doubles c[3];
+      product(m, b0, b1, b2, c);
+      for (int l = 0; l < count; ++l) {
+        add(col[m0 + l], Vec3(c[0][l], c[1][l], c[2][l]));
+        sx += b0[l];
+        sy += b1[l];
+        sz += b2[l];
+      }
+    };
+    for (; k + kWidth <= n; k += kWidth) emit(k, kWidth, widen(bx + k), widen(by + k), widen(bz + k));
+    if (k < n) {
+      double e[3][kWidth] = {};
+      for (Index l = 0; k + l < n; ++l) {
+        e[0][l] = bx[k + l];
+        e[1][l] = by[k + l];
+        e[2][l] = bz[k + l];
+      }
+      Doubles E[3];
+      std::memcpy(E, e, sizeof E);
+      emit(k, static_cast<int>(n - k), E[0], E[1], E[2]);
+    }
+  } else {
+    for (; k < n; ++k) {
+      const double b0 = bx[k], b1 = by[k], b2 = bz[k];
+      double c[3];
+      product(wm, b0, b1, b2, c);
+      add(col[k], Vec3(c[0], c[1], c[2]));
+      sx += b0;
+      sy += b1;
+      sz += b2;
+    }
+  }
+  double own[3];
+  product(wm, sx, sy, sz, own);
+  add(L, Vec3(-own[0], -own[1], -own[2]));
+}
+
+}  // namespace rkpm::rk::lanes
