@@ -7,7 +7,7 @@ target_compile_options(rkpm_options INTERFACE
 # GCC notes that a function returning a 32-byte generic vector (rk/row_lanes.hpp) has
 # another ABI with AVX than without. Those functions are inline and never cross a
 # library boundary, so the note is noise.
-target_compile_options(rkpm_options INTERFACE $<$<CXX_COMPILER_ID:GNU>:-Wno-psabi>)
+target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:$<$<CXX_COMPILER_ID:GNU>:-Wno-psabi>>)
 if(RKPM_NATIVE)
   target_compile_options(rkpm_options INTERFACE $<BUILD_INTERFACE:-march=native>)
 endif()

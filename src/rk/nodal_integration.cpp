@@ -251,10 +251,6 @@ void release_freed_pages() {
 #endif
 }
 
-// Joins the pieces in block order into one CSR matrix, freeing each as it goes and
-// returning the freed pages every few pieces, so a build's peak is about one copy of
-// the matrix (the pieces, then the matrix as it fills) rather than two (at 1e6
-// particles of a block, 2.9 KB per particle before, docs/performance.md).
 // Appends a piece's values as they are: one per entry.
 template <class Value>
 void append_values(const CsrPiece<Value>& piece, std::vector<Value>& out) {
@@ -264,6 +260,7 @@ void append_values(const CsrPiece<Value>& piece, std::vector<Value>& out) {
 // Appends a piece of single-precision gradients in GradientOperator::grad_float's
 // planar order: each row's x components, then its y, then its z.
 void append_values(const CsrPiece<Vec3f>& piece, std::vector<float>& out) {
+  static_assert(sizeof(Vec3f) == 3 * sizeof(float), "three floats per entry, no padding");
   std::size_t k0 = 0;
   for (const Index len : piece.length) {
     const auto n = static_cast<std::size_t>(len);
@@ -273,6 +270,11 @@ void append_values(const CsrPiece<Vec3f>& piece, std::vector<float>& out) {
   }
 }
 
+// Joins the pieces in block order into one CSR matrix, freeing each as it goes and
+// returning the freed pages every few pieces, so a build's peak is about one copy of
+// the matrix (the pieces, then the matrix as it fills) rather than two (at 1e6
+// particles of a block, 2.9 KB per particle before, docs/performance.md). `value` takes
+// each entry as it is, or (single-precision gradients) as three planar floats.
 template <class Value, class Out>
 void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, std::vector<Index>& col,
           std::vector<Out>& value) {

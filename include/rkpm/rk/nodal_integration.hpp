@@ -200,7 +200,8 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
 
 // The row kernels, typed by the operator's storage `grad` (op.grad or op.grad_float): a
 // pass over many rows (the force pass) dispatches on the precision once and calls these;
-// the untyped functions further below dispatch per call.
+// the untyped functions further below dispatch per call. Single precision reads its rows
+// through op.planar_row (rk/row_lanes.hpp); there `grad` only selects the kernel.
 //
 // The row loops below read the operator through raw pointers and accumulate in locals:
 // with the vectors' members and a Mat3 in memory, the compiler must assume each store
@@ -272,7 +273,7 @@ void scatter_columns(const GradientOperator& op, Index L, const Emit& emit) {
 template <class Stored>
 Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& X,
                           const std::vector<Vec3>& d, Index L) {
-  if constexpr (std::is_same_v<Stored, Vec3>) {
+  if constexpr (!std::is_same_v<Stored, float>) {
     const Vec3* Xp = X.data();
     const Vec3* dp = d.data();
     return row_gradient_of(op, grad, [Xp, dp](Index I) { return Vec3(Xp[I] + dp[I]); }, L);

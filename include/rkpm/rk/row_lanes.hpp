@@ -2,28 +2,31 @@
 //
 // Why: the force pass spends most of its time in two loops over each row, the gather
 // F_L = I + sum_k (v_k - v_L) (x) b~_k and the scatter f_k += w M b~_k
-// (rk/nodal_integration.hpp). A 3-vector fills no vector register (Eigen does not
-// vectorize a Vector3d), so one entry cost 18 scalar multiplies and adds. Here:
+// (rk/nodal_integration.hpp). A 3-vector fills no whole vector register: Eigen packs
+// two components of a Vector3d into an SSE2 register and does the third alone. Here:
 // - the gather keeps v_k - v_L in the first three lanes of a four-lane vector and adds
-//   one entry at a time, in the row's order: each of the nine sums is the one-entry
-//   loop's sequential sum, to the bit;
-// - the scatter forms the contributions w M b~_k of four entries at once, each lane
-//   with the one-entry loop's operations in its order, and hands them to the sink in
+//   one entry at a time, in the row's order: each of the nine sums is the sequential
+//   sum the Eigen loop made, to the bit;
+// - the scatter forms the contributions (w M) b~_k of four entries at once, each lane
+//   with the operations of the Eigen loop in its order, and hands them to the sink in
 //   the row's order: the same bits again.
 // The row's entries are stored component by component (all x, then all y, then all z:
 // GradientOperator's planar layout), so the scatter loads four entries' components with
 // one load each. The vectors are the compiler's generic vector types; a build for the
-// machine (RKPM_NATIVE) with AVX uses them, the portable build (SSE2, where each 4-lane
-// operation is two instructions) runs the same arithmetic one entry at a time
-// (kVectorRows). A lane's arithmetic is the same IEEE operation as the scalar one (no
-// fused multiply-add: cmake/warnings.cmake), so both forms give the bits of the
-// one-entry loops they replace (tests/rk/test_row_lanes.cpp checks both forms in every
-// build).
+// machine (RKPM_NATIVE) with AVX uses them (the vector form), the portable build (SSE2,
+// where each 4-lane operation is two instructions and measured slower) runs the same
+// arithmetic one entry at a time (the scalar form; kVectorRows picks). A lane's
+// arithmetic is the same IEEE operation as the scalar one (no fused multiply-add:
+// cmake/warnings.cmake), so both forms give the same bits, which are those of the
+// portable build's Eigen loops they replace (tests/rk/test_row_lanes.cpp checks both
+// forms in every build). A build with FMA had Eigen fuse two components of M b; there
+// the scatter now rounds as the portable build does.
 //
 // Summing across lanes (lane l takes entries l, l + 4, ...) would shorten the gather's
 // dependency chains, but changes F by round-off and with it the path of a relaxation
-// (docs/relaxation.md, "Round-off moves the path"); measured on the block and the
-// shell at 1e5 it gained 3-6 % over this form (docs/performance.md).
+// (docs/relaxation.md, "Round-off moves the path"). Measured at 1e5 particles with the
+// vector scatter, it was 5-9 % faster than the kept forms in the native build and
+// 3-7 % slower in the portable one (docs/performance.md).
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -33,8 +36,9 @@
 namespace rkpm::rk::lanes {
 
 // Whether the target has whole 4-double registers. Without them (the portable SSE2
-// build) each 4-lane operation is two instructions, and the one-entry loops measured
-// faster (docs/performance.md), so the force pass takes them there.
+// build) each 4-lane operation is two instructions, and the scalar form measured
+// faster (docs/performance.md), so the force pass takes it there. Both forms give the
+// same bits, so translation units built for different targets agree.
 #ifdef __AVX__
 inline constexpr bool kVectorRows = true;
 #else
@@ -54,9 +58,9 @@ inline Doubles widen(const float* p) {
   return __builtin_convertvector(f, Doubles);
 }
 
-// M b with the association of Eigen's Matrix3d * Vector3d in a portable build (SSE2):
-// the first two components as (M_i0 b_0 + M_i1 b_1) + M_i2 b_2, the third as
-// M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
+// M b with the association of Eigen's Matrix3d * Vector3d in a portable build (SSE2:
+// the first two components in one packet, column by column, the third by a scalar
+// sum): (M_i0 b_0 + M_i1 b_1) + M_i2 b_2 for i = 0, 1 and M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
 // these kernels, which evaluates it as (w M) b, and a relaxation's path follows the
 // round-off (docs/relaxation.md, "Round-off moves the path"), so the kernels keep those
 // bits. T is double or Doubles (four entries at once).
