@@ -60,7 +60,8 @@ inline Doubles widen(const float* p) {
 
 // M b with the association of Eigen's Matrix3d * Vector3d in a portable build (SSE2:
 // the first two components in one packet, column by column, the third by a scalar
-// sum): (M_i0 b_0 + M_i1 b_1) + M_i2 b_2 for i = 0, 1 and M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
+// sum): (M_i0 b_0 + M_i1 b_1) + M_i2 b_2 for i = 0, 1, and
+// M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
 // these kernels, which evaluates it as (w M) b, and a relaxation's path follows the
 // round-off (docs/relaxation.md, "Round-off moves the path"), so the kernels keep those
 // bits. T is double or Doubles (four entries at once).
