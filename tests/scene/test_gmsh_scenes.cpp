@@ -13,11 +13,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kDir = fs::path(::testing::TempDir()) / "rkpm_gmsh_scenes";
+// One directory per test: ctest runs the tests of this file as separate processes in
+// parallel, and each writes its own box.geo; a shared directory let one test truncate
+// the file while another read it.
+fs::path test_dir() {
+  return fs::path(::testing::TempDir()) / "rkpm_gmsh_scenes" /
+         ::testing::UnitTest::GetInstance()->current_test_info()->name();
+}
 
 void write(const std::string& name, const std::string& text) {
-  fs::create_directories(kDir);
-  std::ofstream(kDir / name) << text;
+  fs::create_directories(test_dir());
+  std::ofstream(test_dir() / name) << text;
 }
 
 const std::string kGeo = R"(SetFactory("OpenCASCADE");
@@ -36,7 +42,7 @@ std::string scene_text(const std::string& file, const std::string& cloud_extra, 
 
 Scene load(const std::string& name, const std::string& text) {
   write(name, text);
-  return load_scene((kDir / name).string());
+  return load_scene((test_dir() / name).string());
 }
 
 void expect_error(const std::string& name, const std::string& text, const std::string& message) {
@@ -55,7 +61,7 @@ TEST(GmshScene, ThePhysicalSurfacesNameTheBodysSurfaces) {
                                              "type = \"surface_pressure\"\nbody = \"cell\"\nsurface = \"ends\"\n"
                                              "pressure = 10\n"));
   EXPECT_EQ(s.bodies[0].surfaces(), (std::vector<std::string>{"surface", "bottom", "ends"}));
-  EXPECT_EQ(s.bodies[0].cloud_file, (kDir / "box.geo").lexically_normal().string());
+  EXPECT_EQ(s.bodies[0].cloud_file, (test_dir() / "box.geo").lexically_normal().string());
 }
 
 TEST(GmshScene, ASurfaceTheFileDoesNotNameIsAnError) {

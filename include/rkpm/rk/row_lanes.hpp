@@ -123,38 +123,27 @@ void scatter_row(const Index* col, const float* b, Index n, Index L, double w, c
     Doubles m[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) m[i][j] = broadcast(wm[i][j]);
-    const auto emit = [&](Index m0, int count, const Doubles& b0, const Doubles& b1, const Doubles& b2) {
+    for (; k + kWidth <= n; k += kWidth) {
+      const Doubles b0 = widen(bx + k), b1 = widen(by + k), b2 = widen(bz + k);
       Doubles c[3];
       product(m, b0, b1, b2, c);
-      for (int l = 0; l < count; ++l) {
-        add(col[m0 + l], Vec3(c[0][l], c[1][l], c[2][l]));
+      for (int l = 0; l < kWidth; ++l) {
+        add(col[k + l], Vec3(c[0][l], c[1][l], c[2][l]));
         sx += b0[l];
         sy += b1[l];
         sz += b2[l];
       }
-    };
-    for (; k + kWidth <= n; k += kWidth) emit(k, kWidth, widen(bx + k), widen(by + k), widen(bz + k));
-    if (k < n) {
-      double e[3][kWidth] = {};
-      for (Index l = 0; k + l < n; ++l) {
-        e[0][l] = bx[k + l];
-        e[1][l] = by[k + l];
-        e[2][l] = bz[k + l];
-      }
-      Doubles E[3];
-      std::memcpy(E, e, sizeof E);
-      emit(k, static_cast<int>(n - k), E[0], E[1], E[2]);
     }
-  } else {
-    for (; k < n; ++k) {
-      const double b0 = bx[k], b1 = by[k], b2 = bz[k];
-      double c[3];
-      product(wm, b0, b1, b2, c);
-      add(col[k], Vec3(c[0], c[1], c[2]));
-      sx += b0;
-      sy += b1;
-      sz += b2;
-    }
+  }
+  // The scalar form's entries, and the vector form's last ones (the same operations).
+  for (; k < n; ++k) {
+    const double b0 = bx[k], b1 = by[k], b2 = bz[k];
+    double c[3];
+    product(wm, b0, b1, b2, c);
+    add(col[k], Vec3(c[0], c[1], c[2]));
+    sx += b0;
+    sy += b1;
+    sz += b2;
   }
   double own[3];
   product(wm, sx, sy, sz, own);
