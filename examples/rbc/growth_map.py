@@ -8,9 +8,14 @@ isothermal coordinate u = integral ds / r along the meridian (s arc length, r di
 from the axis), measured from the equator. The growth is then g = r_target(u) / r_start(u).
 Printed: g against the relative distance rho = r / R of the starting shell, for the
 Evans-Fung disc scaled to the same area as the start (and to the same diameter).
-Usage: python3 examples/rbc/growth_map.py   (standard library only)
+With wall thicknesses T [um] as arguments it also prints the map between the mid-surfaces
+of a wall of thickness T: the spheroid with semi-axes reduced by T / 2, and Evans-Fung
+offset inward along its normal by T / 2, scaled so the two mid-surfaces have the same
+area (docs/rbc.md, "What the 0.75 um wall lacks").
+Usage: python3 examples/rbc/growth_map.py [T_um ...]   (standard library only)
 """
 import math
+import sys
 
 N = 20000
 
@@ -43,6 +48,26 @@ def area(pts):
                    for (r0, z0), (r1, z1) in zip(pts, pts[1:]))
 
 
+def offset_inward(pts, d):
+    """The meridian moved by d along its inward normal (the curve runs from the equator
+    to the pole, so the outward normal of the closed surface is (dz, -dr) / |ds|)."""
+    out = []
+    for k, (r, z) in enumerate(pts):
+        (r0, z0), (r1, z1) = pts[max(k - 1, 0)], pts[min(k + 1, len(pts) - 1)]
+        length = math.hypot(r1 - r0, z1 - z0)
+        out.append((r - d * (z1 - z0) / length, z + d * (r1 - r0) / length))
+    return out
+
+
+def equal_area_radius(make, target_area):
+    """Bisection for the radius at which make(radius) has the given area."""
+    lo, hi = 1.0, 10.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if area(make(mid)) < target_area else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
 def growth(start, target):
     us, ut = isothermal(start), isothermal(target)
     rows, j = [], 0
@@ -60,4 +85,13 @@ for label, radius in (("same area", 3.91 * math.sqrt(a0 / area(evans_fung(3.91))
     print(f"Evans-Fung at {label} (D = {2 * radius:.2f} um):")
     print("  rho = r/R   g")
     for rho, g in growth(start, evans_fung(radius)):
+        print(f"  {rho:8.2f}  {g:6.3f}")
+
+for thickness in (float(t) for t in sys.argv[1:]):
+    start = oblate(5.0 - thickness / 2, 1.5 - thickness / 2)
+    make = lambda radius: offset_inward(evans_fung(radius), thickness / 2)
+    radius = equal_area_radius(make, area(start))
+    print(f"Mid-surfaces of a {thickness} um wall (Evans-Fung outer D = {2 * radius:.2f} um):")
+    print("  rho = r/R   g")
+    for rho, g in growth(start, make(radius)):
         print(f"  {rho:8.2f}  {g:6.3f}")
