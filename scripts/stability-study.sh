@@ -34,11 +34,12 @@ size=1e-5       # block edge [m]
 rho=1000        # [kg/m^3]
 steps=10000     # steps per case
 
-# scene NAME CELLS RK_TOML INITIAL_TOML: a free block of side $size made of $MATERIAL.
+# scene NAME CELLS RK_TOML INITIAL_TOML [INTEGRATOR_TOML]: a free block of side $size made
+# of $MATERIAL; INTEGRATOR_TOML adds keys to [integrator].
 # The frame interval is steps/20 times a step estimate from the P-wave speed of
 # the material (MU and KBULK below), so history.csv gets about 20 rows.
 scene() {
-  local name=$1 cells=$2 rk=$3 initial=$4
+  local name=$1 cells=$2 rk=$3 initial=$4 integrator=${5:-}
   local dt_est every
   dt_est=$(awk -v h="$size" -v n="$cells" -v mu="$MU" -v k="$KBULK" -v rho="$rho" \
     'BEGIN { printf "%.6g", 0.5 * h / n / sqrt((k + 4 * mu / 3) / rho) }')
@@ -48,6 +49,7 @@ scene() {
 name = "$name"
 [integrator]
 t_end = $(awk -v dt="$dt_est" -v s="$steps" 'BEGIN { printf "%.6g", 100 * dt * s }')
+$integrator
 [output]
 every = $every
 cells = "points"
@@ -137,6 +139,12 @@ mooney 400 4000; scene stretch_3 6 "$scni" 'stretch = [3.0, 1.0, 1.0]';    run_c
 mooney 400 4000; scene compress_0.3 6 "$scni" 'stretch = [0.3, 1.0, 1.0]'; run_case compress_0.3 "released from compression 0.3 along x"
 mooney 400 4000; scene stretch_3_all 6 "$scni" 'stretch = [3.0, 3.0, 3.0]'; run_case stretch_3_all "released from stretch 3 in all directions"
 mooney 400 4000; scene compress_0.3_all 6 "$scni" 'stretch = [0.3, 0.3, 0.3]'; run_case compress_0.3_all "released from compression 0.3 in all directions"
+# The same releases with the stable step estimated every step (stable_step_interval = 1).
+every='stable_step_interval = 1'
+mooney 400 4000; scene stretch_3_every 6 "$scni" 'stretch = [3.0, 1.0, 1.0]' "$every"; run_case stretch_3_every "released from stretch 3 along x, stable step every step"
+mooney 400 4000; scene compress_0.3_every 6 "$scni" 'stretch = [0.3, 1.0, 1.0]' "$every"; run_case compress_0.3_every "released from compression 0.3 along x, stable step every step"
+mooney 400 4000; scene stretch_3_all_every 6 "$scni" 'stretch = [3.0, 3.0, 3.0]' "$every"; run_case stretch_3_all_every "released from stretch 3 in all directions, stable step every step"
+mooney 400 4000; scene compress_0.3_all_every 6 "$scni" 'stretch = [0.3, 0.3, 0.3]' "$every"; run_case compress_0.3_all_every "released from compression 0.3 in all directions, stable step every step"
 # High activity: |zeta| = 0.5, 2, 10 mu, contractile and extensile (LCE, K = 100 mu).
 for z in 0.5 2 10 -2 -10; do
   lce 1000 1e5 "$(awk -v z="$z" 'BEGIN { print 1000 * z }')"

@@ -342,6 +342,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.contact_mass_scaling = p.flag("contact_mass_scaling");
   s.fire = FireParameters::named(p.choice("relax_method"));
   s.measured_stable_step = p.choice("stable_step") == "measured";
+  s.stable_step_interval = p.integer("stable_step_interval");
   return s;
 }
 

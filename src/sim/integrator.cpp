@@ -324,14 +324,15 @@ void Integrator::check(double kinetic_of_motion) {
   update_convergence(kinetic_of_motion);
 }
 
-// The stable step follows the state (stiffening, contact): it is re-estimated every 10
-// steps. Three cases: a user step is kept while it stays below the estimate (as at the
+// The stable step follows the state (stiffening, contact): it is re-estimated every
+// stable_step_interval steps (10 by default; 1 for releases from large strain,
+// docs/stability.md). Three cases: a user step is kept while it stays below the estimate (as at the
 // start) and, once clamped, the run follows the automatic step; a dynamic run (or a
 // clamped one) takes the automatic step; FIRE grows its step by itself, up to the
 // automatic step as a ceiling.
 void Integrator::step_size_policy() {
   if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
-  if (world_.step % 10 != 0) return;
+  if (world_.step % settings_.stable_step_interval != 0) return;
   if (settings_.measured_stable_step && world_.step % kCalibrateEvery == 0) calibrate_stable_step();
   scale_inertia_for_terms();
   stable_dt_ = estimate_stable_dt();

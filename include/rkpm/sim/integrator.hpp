@@ -29,6 +29,7 @@ struct IntegratorSettings {
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool contact_mass_scaling = false;  // relax only: terms raise their particles' inertia to the bodies' step (Term::scale_inertia_to)
   bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
+  std::int64_t stable_step_interval = 10;  // steps between two estimates of the stable step
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
 };
