@@ -103,7 +103,9 @@ run_case() {
   status=$(jq -r .status "$s"); nsteps=$(jq -r .steps "$s"); dt=$(jq -r .dt "$s"); wall=$(jq -r .wall_time "$s")
   diagnosis=$(jq -r '.diagnosis // ""' "$s")
   # Largest energy error and smallest J over the frames (history.csv), and the final state.
-  read -r maxerr minj < <(awk -F, 'NR > 1 { e = ($10 < 0 ? -$10 : $10); if (e > m) m = e; if (j == "" || $12 < j) j = $12 }
+  # The columns by their names in the header (history.csv gains columns over time).
+  read -r maxerr minj < <(awk -F, 'NR == 1 { for (c = 1; c <= NF; ++c) { if ($c == "energy_error") ce = c; if ($c == "min_J") cj = c }; next }
+                                   { e = ($ce < 0 ? -$ce : $ce); if (e > m) m = e; if (j == "" || $cj < j) j = $cj }
                                    END { printf "%.3g %.4g\n", m, j }' "$out/history.csv")
   if [ "$code" -ne 3 ]; then
     local final_err final_j
@@ -140,11 +142,11 @@ mooney 400 4000; scene compress_0.3 6 "$scni" 'stretch = [0.3, 1.0, 1.0]'; run_c
 mooney 400 4000; scene stretch_3_all 6 "$scni" 'stretch = [3.0, 3.0, 3.0]'; run_case stretch_3_all "released from stretch 3 in all directions"
 mooney 400 4000; scene compress_0.3_all 6 "$scni" 'stretch = [0.3, 0.3, 0.3]'; run_case compress_0.3_all "released from compression 0.3 in all directions"
 # The same releases with the stable step estimated every step (stable_step_interval = 1).
-every='stable_step_interval = 1'
-mooney 400 4000; scene stretch_3_every 6 "$scni" 'stretch = [3.0, 1.0, 1.0]' "$every"; run_case stretch_3_every "released from stretch 3 along x, stable step every step"
-mooney 400 4000; scene compress_0.3_every 6 "$scni" 'stretch = [0.3, 1.0, 1.0]' "$every"; run_case compress_0.3_every "released from compression 0.3 along x, stable step every step"
-mooney 400 4000; scene stretch_3_all_every 6 "$scni" 'stretch = [3.0, 3.0, 3.0]' "$every"; run_case stretch_3_all_every "released from stretch 3 in all directions, stable step every step"
-mooney 400 4000; scene compress_0.3_all_every 6 "$scni" 'stretch = [0.3, 0.3, 0.3]' "$every"; run_case compress_0.3_all_every "released from compression 0.3 in all directions, stable step every step"
+per_step='stable_step_interval = 1'
+mooney 400 4000; scene stretch_3_every 6 "$scni" 'stretch = [3.0, 1.0, 1.0]' "$per_step"; run_case stretch_3_every "released from stretch 3 along x, stable step every step"
+mooney 400 4000; scene compress_0.3_every 6 "$scni" 'stretch = [0.3, 1.0, 1.0]' "$per_step"; run_case compress_0.3_every "released from compression 0.3 along x, stable step every step"
+mooney 400 4000; scene stretch_3_all_every 6 "$scni" 'stretch = [3.0, 3.0, 3.0]' "$per_step"; run_case stretch_3_all_every "released from stretch 3 in all directions, stable step every step"
+mooney 400 4000; scene compress_0.3_all_every 6 "$scni" 'stretch = [0.3, 0.3, 0.3]' "$per_step"; run_case compress_0.3_all_every "released from compression 0.3 in all directions, stable step every step"
 # High activity: |zeta| = 0.5, 2, 10 mu, contractile and extensile (LCE, K = 100 mu).
 for z in 0.5 2 10 -2 -10; do
   lce 1000 1e5 "$(awk -v z="$z" 'BEGIN { print 1000 * z }')"

@@ -333,7 +333,10 @@ void Integrator::check(double kinetic_of_motion) {
 void Integrator::step_size_policy() {
   if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   if (world_.step % settings_.stable_step_interval != 0) return;
-  if (settings_.measured_stable_step && world_.step % kCalibrateEvery == 0) calibrate_stable_step();
+  // The first estimate at or after each multiple of kCalibrateEvery calibrates, whatever
+  // the interval (with 10 exactly at the multiples).
+  if (settings_.measured_stable_step && world_.step % kCalibrateEvery < settings_.stable_step_interval)
+    calibrate_stable_step();
   scale_inertia_for_terms();
   stable_dt_ = estimate_stable_dt();
   const double automatic = settings_.dt_safety * stable_dt_;

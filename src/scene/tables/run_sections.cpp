@@ -67,11 +67,12 @@ ParamTable integrator_section() {
                 "force evaluations each). On the RBC shell it is 1.9x the wave-speed step; where a term's own "
                 "limit binds (contact) nothing changes (docs/relaxation.md)."),
       ParamSpec::integer("stable_step_interval").at_least(1).at_most(1000).defaults(std::int64_t{10})
-          .help("Steps between two estimates of the stable step. The default follows slow changes of "
-                "the state at a tenth of the cost of every step; 1 follows a state that changes within a "
-                "few steps, as in a release from stretch 3 or compression 0.3 along an axis, which at the "
-                "default blows up between two estimates (docs/stability.md). A step that changes every "
-                "step also spoils velocity Verlet's energy conservation slightly."),
+          .help("Steps between two estimates of the stable step (each one wave-speed pass over the "
+                "particles). The default follows slow changes of the state; 1 follows a state that "
+                "changes within a few steps, as in a release from stretch 3 or compression 0.3 along an "
+                "axis, which at the default outruns the estimate and blows up after several hundred steps "
+                "(docs/stability.md). A step that changes in most steps conserves energy slightly worse "
+                "(measured with a schedule that re-estimated in most steps)."),
       ParamSpec::real("damping", "1/s").at_least(0).defaults(0.0)
           .help("Mass-proportional damping coefficient c: force -c m v on every particle."),
       ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})

@@ -82,7 +82,8 @@ class Contact final : public Term {
   // Critical step of the pair springs at the current configuration: with k_IJ the
   // pair-Hessian bound above times n_I n_J w_J, Gershgorin's bound on the largest
   // eigenvalue of M^-1/2 K M^-1/2 is omega^2 <= max_P sum_Q k_PQ (1/m_P + 1/sqrt(m_P m_Q)),
-  // and dt = 2 / omega. The integrator multiplies by dt_safety and re-estimates every 10 steps.
+  // and dt = 2 / omega. The integrator multiplies by dt_safety and re-estimates every
+  // stable_step_interval steps (10 by default).
   double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
   // With a report surface: the first body's centroid, smallest gap and contact patch.
