@@ -326,8 +326,8 @@ void Integrator::check(double kinetic_of_motion) {
 
 // The stable step follows the state (stiffening, contact): it is re-estimated every
 // stable_step_interval steps (10 by default; 1 for releases from large strain,
-// docs/stability.md). Three cases: a user step is kept while it stays below the estimate (as at the
-// start) and, once clamped, the run follows the automatic step; a dynamic run (or a
+// docs/stability.md). Three cases: a user step is kept while it stays below the
+// estimate (as at the start) and, once clamped, the run follows the automatic step; a dynamic run (or a
 // clamped one) takes the automatic step; FIRE grows its step by itself, up to the
 // automatic step as a ceiling.
 void Integrator::step_size_policy() {
