@@ -74,7 +74,10 @@ ParamTable integrator_section() {
                 "(docs/stability.md). A step that changes in most steps conserves energy slightly worse "
                 "(measured with a schedule that re-estimated in most steps)."),
       ParamSpec::real("damping", "1/s").at_least(0).defaults(0.0)
-          .help("Mass-proportional damping coefficient c: force -c m v on every particle."),
+          .help("Mass-proportional damping coefficient c: force -c m v on every particle. Above twice "
+                "the body's slowest angular frequency (about pi c_s / L) and with stable_step_interval = 1 "
+                "it carries releases from stretch 3 or compression 0.3, in all directions too, to rest "
+                "(docs/stability.md)."),
       ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})
           .help("Hard limit on the number of steps; reaching it before t_end (or convergence) ends the run with exit code 4."),
       ParamSpec::real("relax_force_tol", "-").greater_than(0).defaults(1e-6)
