@@ -49,7 +49,7 @@ for tag in tags:
                      r_hmax=sh["r_hmax_over_R"], rms_ef=sh["rms_vs_evans_fung_over_D"], updown=sh["updown_asymmetry"],
                      reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6,
                      gap_um=sh["inner_gap_centre"] * 1e6, wall_centre_um=sh["wall_thickness_centre"] * 1e6,
-                     biconcave=sh["biconcave"]))
+                     biconcave=sh["biconcave"], matches_evans_fung=sh.get("matches_evans_fung")))
 if not rows:
     sys.exit("no finished runs")
 rows.sort(key=lambda r: r["thickness_um"])
@@ -64,15 +64,16 @@ with open(f"{out}/table.md", "w") as f:
             "up-down <= 5 %.\n\n")
     f.write("| T [um] | particles | steps (levels + own cloud) | wall [s] | converged | h_min/h_max | r(h_max)/R | "
             "RMS vs Evans-Fung [% of D] | up-down [%] | reduced volume | D [um] | fluid on the axis [um] | "
-            "wall on the axis [um] | biconcave |\n")
-    f.write("|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n")
+            "wall on the axis [um] | biconcave | all four criteria |\n")
+    f.write("|---:|---:|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---|\n")
     for r in rows:
         steps = f"{r['level_steps']} + {r['steps']:,}" if r["level_steps"] else f"{r['steps']:,}"
         f.write(f"| {r['thickness_um']:g} | {r['particles']:,} | {steps} | {r['wall_s']:.0f} | "
                 f"{'yes' if r['converged'] else 'no'} | {r['h_ratio']:.3f} | {r['r_hmax']:.3f} | "
                 f"{100 * r['rms_ef']:.1f} | {100 * r['updown']:.1f} | {r['reduced_volume']:.3f} | "
                 f"{r['diameter_um']:.2f} | {r['gap_um']:.3f} | {r['wall_centre_um']:.3f} | "
-                f"{'yes' if r['biconcave'] else 'no'} |\n")
+                f"{'yes' if r['biconcave'] else 'no'} | "
+                f"{ {True: 'yes', False: 'no'}.get(r['matches_evans_fung'], '-')} |\n")
 print(open(f"{out}/table.md").read())
 # Thickness profiles h(r), each beside its own Evans-Fung curve (scaled to its diameter),
 # in units of the run's diameter, for the plot.

@@ -108,6 +108,7 @@ void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv,
     j.set("walls_crossed", s.walls_crossed);
   }
   j.set("biconcave", s.biconcave);
+  j.set("matches_evans_fung", s.matches_evans_fung);
   summary.set("shape", j);
   // The inner surface's columns are left empty in the bins it does not reach.
   std::ofstream out(profile_csv);

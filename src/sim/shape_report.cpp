@@ -102,7 +102,12 @@ SheetBins bin_sheets(const std::vector<Vec3>& positions, const std::vector<Vec3>
     const double angle = std::atan2(p.y(), p.x()) + kPi;
     const int sector = std::min(kSectors - 1, static_cast<int>(angle / (2.0 * kPi) * kSectors));
     const int k = b * kSectors + sector;
-    if (top_sign * normal[i].z() > 0.0) {
+    // A normal horizontal to round-off marks the fold where the sheets meet (the equator
+    // of a mirror-symmetric shape), on neither sheet: a tie given to one sheet would
+    // make a symmetric shape look up-down asymmetric in the outermost bin.
+    const double up = top_sign * normal[i].z();
+    if (std::abs(up) <= 1e-9 * normal[i].norm()) continue;
+    if (up > 0.0) {
       s.top_sum[k] += p.z();
       ++s.top_n[k];
     } else {
@@ -206,6 +211,7 @@ ShapeReport measure_shape(const particles::Cloud& cloud, const std::vector<Vec3>
     }
   }
   s.biconcave = s.h_min / s.h_max <= 0.5 && s.r_hmax_over_R >= 0.55 && s.r_hmax_over_R <= 0.85 && !s.walls_crossed;
+  s.matches_evans_fung = s.biconcave && s.rms_vs_evans_fung <= 0.05 && s.updown_asymmetry <= 0.05;
   return s;
 }
 

@@ -127,6 +127,8 @@ void expect_evans_fung_disc(const Relaxed& r) {
   EXPECT_LT(r.final.diameter, 0.97 * r.initial.diameter);
   EXPECT_GT(r.final.reduced_volume, 0.55);
   EXPECT_LT(r.final.reduced_volume, 0.68);
+  // The run's own verdict on the four criteria above.
+  EXPECT_TRUE(r.final.matches_evans_fung);
 }
 
 TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {

@@ -70,6 +70,36 @@ TEST(ShapeReport, WallsPressedThroughEachOtherAreFlaggedAndNotBiconcave) {
   }
 }
 
+// The Evans-Fung disc of the test above (walls not pressed) matches all four criteria of
+// the red-blood-cell scene; thickened by 0.6 um everywhere it is still biconcave
+// (h_min/h_max (1.04 + 0.6) / (3.3 + 0.6) = 0.42) but 6 % of D off the profile, and
+// tilted into a cup (z += 0.4 um (r / R)^2) it is off the up-down criterion.
+TEST(ShapeReport, MatchingEvansFungNeedsTheProfileAndTheSymmetryToo) {
+  const particles::Cloud cloud = seed_shell();
+  const auto disc = [&](double thickening, double cup) {
+    std::vector<Vec3> x = cloud.X;
+    for (auto& p : x) {
+      const double r2 = p.x() * p.x() + p.y() * p.y(), x2 = r2 / 25e-12;
+      p.z() *= (0.81 + 7.83 * x2 - 4.39 * x2 * x2) * (10.0 / 7.82) / 3.0;
+      p.z() += std::copysign(0.5 * thickening, p.z()) + cup * x2;
+    }
+    return measure_shape(cloud, x, "outer");
+  };
+  const ShapeReport evans_fung = disc(0.0, 0.0);
+  EXPECT_LT(evans_fung.rms_vs_evans_fung, 0.02);
+  EXPECT_TRUE(evans_fung.biconcave);
+  EXPECT_TRUE(evans_fung.matches_evans_fung);
+  const ShapeReport thick = disc(0.6e-6, 0.0);
+  EXPECT_GT(thick.rms_vs_evans_fung, 0.05);
+  EXPECT_TRUE(thick.biconcave);
+  EXPECT_FALSE(thick.matches_evans_fung);
+  const ShapeReport cup = disc(0.0, 0.4e-6);
+  EXPECT_GT(cup.updown_asymmetry, 0.05);
+  EXPECT_LT(cup.rms_vs_evans_fung, 0.05);
+  EXPECT_TRUE(cup.biconcave);
+  EXPECT_FALSE(cup.matches_evans_fung);
+}
+
 // The same disc with the walls pressed through each other in one place only: a dent of
 // depth a0 = 2 um at r = 2.5 um in the direction 22.5 deg (the middle of one of the
 // report's eight 45-deg sectors), 0.5 um wide radially and 0.3 rad around. The inner

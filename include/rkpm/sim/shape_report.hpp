@@ -53,6 +53,9 @@ struct ShapeReport {
   double wall_thickness_centre = 0.0;    // there: mean of the top and bottom wall's thickness [m]
   bool walls_crossed = false;            // inner_gap_min < -0.01 h_max
   bool biconcave = false;         // h_min / h_max <= 0.5, r(h_max)/R in [0.55, 0.85], walls not crossed
+  // The red-blood-cell scene's four criteria together (examples/rbc/README.md): biconcave,
+  // and the profile within 5 % of D of Evans-Fung (RMS) and up-down symmetric to 5 % of h_max.
+  bool matches_evans_fung = false;
 };
 
 // `positions`: current (physical) positions of all particles of the cloud; the outer
