@@ -3,6 +3,9 @@
 
 #include "materials/lce/director_point.hpp"
 
+#include <algorithm>
+#include <vector>
+
 namespace rkpm::sim {
 
 namespace {
@@ -19,6 +22,22 @@ double director_energy(const Body& body, const materials::LiquidCrystalElastomer
   return total.value();
 }
 }  // namespace
+
+double director_residual(const Body& body) {
+  if (!body.director || !body.director->evolve) return 0.0;
+  const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
+  const DirectorField& dir = *body.director;
+  if (model.mobility <= 0.0 || dir.rate.empty()) return 0.0;
+  // The anchored surface's director is set to the normal, not evolved: its rate is moot.
+  std::vector<char> set_by_anchoring(dir.rate.size(), 0);
+  if (dir.anchored)
+    for (const Index I : body.cloud.boundary_particles)
+      if (static_cast<std::size_t>(I) < set_by_anchoring.size()) set_by_anchoring[I] = 1;
+  double largest = 0.0;
+  for (Index I = body.owned_begin(); I < body.owned_end(); ++I)
+    if (!set_by_anchoring[I]) largest = std::max(largest, dir.rate[I].norm());
+  return largest / (model.mobility * model.mu);
+}
 
 DirectorStep advance_director(Body& body, double dt) {
   // Only the LCE carries a director (its BodyMaterial::needs_director).

@@ -398,6 +398,12 @@ void Integrator::update_convergence(double kinetic_of_motion) {
   kinetic_measure_ = kinetic_of_motion / reference_energy_;
 }
 
+double Integrator::director_residual() const {
+  double largest = 0.0;
+  for (const auto& b : world_.bodies) largest = std::max(largest, sim::director_residual(*b));
+  return world_.comm->max(largest);
+}
+
 bool Integrator::converged() const {
   return residual_ < settings_.relax_force_tol && kinetic_measure_ < settings_.relax_velocity_tol;
 }

@@ -375,6 +375,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       json.set("converged", integrator.converged());
       json.set("residual", integrator.residual());
       json.set("kinetic_measure", integrator.kinetic_measure());
+      json.set("director_residual", integrator.director_residual());
     }
     for (const auto& t : world->terms) t->report(*world, json);
     if (shape_body) {

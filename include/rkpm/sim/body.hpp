@@ -167,6 +167,13 @@ struct DirectorStep {
 };
 DirectorStep advance_director(Body& body, double dt);
 
+// How far the director is from its own equilibrium, where Eq. 5 at rest asks that the
+// part of dF/dh across h vanish: the largest |dh/dt| of the last update over L mu, at
+// this rank's particles off the anchored surface. Dimensionless (the molecular field
+// over the shear modulus); at rest the co-rotational part of dh/dt is zero, so this is
+// the Allen-Cahn part alone. 0 when the director does not evolve (L = 0 or no update yet).
+double director_residual(const Body& body);
+
 // The body's reference stiffness, defined once: the small-strain shear modulus mu of
 // the material at integration point (= particle) L [Pa]. The stabilization's
 // stiffness scale and the contact stiffness law (eps_J = eps mu_J / mu_ref) use it

@@ -77,6 +77,9 @@ class Integrator {
   const EnergyLedger& measure_energy();
   // Relaxation: the convergence measures after the last step.
   double residual() const { return residual_; }
+  // The directors' distance from their own equilibrium (sim::director_residual), the
+  // largest over the bodies and ranks; not part of converged(). Collective.
+  double director_residual() const;
   double kinetic_measure() const { return kinetic_measure_; }
   bool converged() const;
   // The step was clamped to the stable estimate (a warning for the user).
