@@ -4,6 +4,7 @@
 #include "materials/lce/director_point.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <vector>
 
 namespace rkpm::sim {
@@ -37,6 +38,18 @@ double director_residual(const Body& body) {
   for (Index I = body.owned_begin(); I < body.owned_end(); ++I)
     if (!set_by_anchoring[I]) largest = std::max(largest, dir.rate[I].norm());
   return largest / (model.mobility * model.mu);
+}
+
+double director_stable_dt(const Body& body) {
+  double dt = std::numeric_limits<double>::infinity();
+  if (!body.director || !body.director->evolve) return dt;
+  const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
+  if (model.mobility <= 0.0) return dt;
+  const DirectorField& dir = *body.director;
+#pragma omp parallel for schedule(static) reduction(min : dt)
+  for (Index I = body.owned_begin(); I < body.owned_end(); ++I)
+    dt = std::min(dt, 2.0 / (model.mobility * model.director_stiffness(body.F[I], dir.h0[I], body.spacing[I])));
+  return dt;
 }
 
 DirectorStep advance_director(Body& body, double dt) {

@@ -41,13 +41,17 @@ double Integrator::bodies_wave_dt() const {
 }
 
 // The bodies' wave-speed step times the calibration (1 unless the step is measured),
-// and each term's own limit: the calibration is measured on the bodies' material
-// stiffness together with whatever the terms add at that state, but a term that
-// stiffens later (a contact that closes) keeps the limit it states.
+// each term's own limit, and the directors' (director_stable_dt): the calibration is
+// measured on the bodies' material stiffness together with whatever the terms add at
+// that state, but a term that stiffens later (a contact that closes) keeps the limit
+// it states, and the director's first-order relaxation is not a vibration the
+// calibration sees.
 double Integrator::estimate_stable_dt() const {
   double dt = calibration_ * bodies_wave_dt();
   for (const auto& t : world_.terms) dt = std::min(dt, t->stable_dt(world_));
-  return dt;
+  double director_dt = std::numeric_limits<double>::infinity();
+  for (const auto& b : world_.bodies) director_dt = std::min(director_dt, director_stable_dt(*b));
+  return std::min(dt, world_.comm->min(director_dt));
 }
 
 // The measured stable step 2 / omega_max (stable_step.hpp) over the wave-speed step at

@@ -174,6 +174,13 @@ DirectorStep advance_director(Body& body, double dt);
 // the Allen-Cahn part alone. 0 when the director does not evolve (L = 0 or no update yet).
 double director_residual(const Body& body);
 
+// The largest step at which the explicit director update (Eq. 5-7) is stable at the
+// current state: min over this rank's particles of 2 / (L director_stiffness); infinity
+// when the director does not evolve. A mobility high enough to bind here would otherwise
+// make the director swing from step to step (its length is renormalised, so nothing
+// diverges: the run just never settles).
+double director_stable_dt(const Body& body);
+
 // The body's reference stiffness, defined once: the small-strain shear modulus mu of
 // the material at integration point (= particle) L [Pa]. The stabilization's
 // stiffness scale and the contact stiffness law (eps_J = eps mu_J / mu_ref) use it

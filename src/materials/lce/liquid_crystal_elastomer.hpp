@@ -165,6 +165,24 @@ struct LiquidCrystalElastomer {
     return corotational_rate - 0.5 * (velocity_gradient.transpose() * h - spin * h);
   }
 
+  // Upper bound [Pa] on the stiffness of the director relaxation at fixed F: the largest
+  // eigenvalue of the linearised -(I - h h^T) dF/dh as a function of h, so that the
+  // explicit update h += dt L (...) is stable for dt < 2 / (L bound). The local part is
+  // the Hessian of W in h, mu (s-1)/s (F F^T + (s-1) F h0 (F h0)^T) (from
+  // director_driving_force), by its largest eigenvalue in absolute value; the Frank part
+  // is a diffusion of h in X with coefficient 2 kf J F^-1 F^-T, and the discrete
+  // Laplacian on particles `spacing` apart has eigenvalues up to 4 / spacing^2 per
+  // direction.
+  double director_stiffness(const Mat3& F, const Vec3& h0, double spacing) const {
+    const Kinematics k(F);
+    const Vec3 Fh0 = F * h0;
+    const Mat3 hessian = (mu * (s - 1.0) / s) * (F * F.transpose() + (s - 1.0) * Fh0 * Fh0.transpose());
+    const Vec3 eigenvalues = symmetric_eigenvalues(hessian);  // ascending
+    const double local = std::max(std::abs(eigenvalues[0]), std::abs(eigenvalues[2]));
+    const double frank = 2.0 * frank_coefficient() * k.J * k.F_inv.squaredNorm() * 12.0 / (spacing * spacing);
+    return local + frank;
+  }
+
   // Director minimising the elastic energy at fixed F (unit; sign chosen with
   // h . F h0 >= 0). W depends on h only through -mu (s-1)/(2s) h.(F l0 F^T) h,
   // so for s > 1 it is the leading eigenvector of F l0 F^T, for s < 1 the

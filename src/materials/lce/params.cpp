@@ -28,7 +28,9 @@ const scene::SettingsTable<Settings>& settings_table() {
                 ParamSpec::real("kappa", "N").at_least(0).defaults(0.0).help("Frank modulus kappa (Eq. 2)."))
           .bind(&Settings::mobility,
                 ParamSpec::real("mobility", "1/(Pa s)").at_least(0).defaults(0.0)
-                  .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only."))
+                  .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only. "
+                      "The step stays below 2 / (L times the director's stiffness), so a high L shortens it "
+                      "(docs/stability.md)."))
           .bind(&Settings::zeta,
                 ParamSpec::real("zeta", "Pa").defaults(0.0)
                   .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
