@@ -153,9 +153,10 @@ mooney 400 4000; scene stretch_3_every 6 "$scni" 'stretch = [3.0, 1.0, 1.0]' "$p
 mooney 400 4000; scene compress_0.3_every 6 "$scni" 'stretch = [0.3, 1.0, 1.0]' "$per_step"; run_case compress_0.3_every "released from compression 0.3 along x, stable step every step"
 mooney 400 4000; scene stretch_3_all_every 6 "$scni" 'stretch = [3.0, 3.0, 3.0]' "$per_step"; run_case stretch_3_all_every "released from stretch 3 in all directions, stable step every step"
 mooney 400 4000; scene compress_0.3_all_every 6 "$scni" 'stretch = [0.3, 0.3, 0.3]' "$per_step"; run_case compress_0.3_all_every "released from compression 0.3 in all directions, stable step every step"
-# The releases run to rest: mass-proportional damping 3e6 / s (above 2 omega for the
-# block's slowest modes, omega ~ pi c_s / L ~ 3e5 rad/s) with the stable step every step;
-# and the two settings next to it that do not hold the releases in all directions.
+# The releases run to rest: mass-proportional damping 3e6 / s (ten times an estimate of
+# the block's slowest angular frequency, pi c_s / L ~ 3e5 rad/s) with the stable step
+# every step; and the two settings next to it that do not hold the releases in all
+# directions.
 damped=$'damping = 3e6\nstable_step_interval = 1'
 mooney 400 4000; scene stretch_3_damped 6 "$scni" 'stretch = [3.0, 1.0, 1.0]' "$damped"; run_case stretch_3_damped "released from stretch 3 along x, damping 3e6 / s, stable step every step"
 mooney 400 4000; scene compress_0.3_damped 6 "$scni" 'stretch = [0.3, 1.0, 1.0]' "$damped"; run_case compress_0.3_damped "released from compression 0.3 along x, damping 3e6 / s, stable step every step"

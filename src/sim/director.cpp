@@ -25,19 +25,25 @@ double director_energy(const Body& body, const materials::LiquidCrystalElastomer
 }  // namespace
 
 double director_residual(const Body& body) {
-  if (!body.director || !body.director->evolve) return 0.0;
+  if (!body.director) return 0.0;
   const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
   const DirectorField& dir = *body.director;
-  if (model.mobility <= 0.0 || dir.rate.empty()) return 0.0;
-  // The anchored surface's director is set to the normal, not evolved: its rate is moot.
-  std::vector<char> set_by_anchoring(dir.rate.size(), 0);
+  // The anchored surface's director is set to the normal, not relaxed: its field is moot.
+  std::vector<char> set_by_anchoring(dir.h.size(), 0);
   if (dir.anchored)
     for (const Index I : body.cloud.boundary_particles)
       if (static_cast<std::size_t>(I) < set_by_anchoring.size()) set_by_anchoring[I] = 1;
   double largest = 0.0;
-  for (Index I = body.owned_begin(); I < body.owned_end(); ++I)
-    if (!set_by_anchoring[I]) largest = std::max(largest, dir.rate[I].norm());
-  return largest / (model.mobility * model.mu);
+  for (Index I = body.owned_begin(); I < body.owned_end(); ++I) {
+    if (set_by_anchoring[I]) continue;
+    const Vec3& h = dir.h[I];
+    // dF/dh as director_rate forms it, from the state (F, h, Grad h and the Frank
+    // divergence of the last force evaluation), so a held director is measured too.
+    const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
+    const Vec3 dF_dh = model.director_driving_force(body.F[I], director_point(dir, I)) - frank;
+    largest = std::max(largest, (dF_dh - h * h.dot(dF_dh)).norm());
+  }
+  return largest / model.mu;
 }
 
 double director_stable_dt(const Body& body) {

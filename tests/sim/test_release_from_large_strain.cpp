@@ -4,8 +4,9 @@
 // 10 steps) the state changes faster than the step follows and the run blew up after
 // 740-1,164 steps (printed below, not asserted: a better estimate may one day hold it);
 // with `stable_step_interval = 1` it runs to its end with the energy ledger balanced.
-// Damped (mass-proportional, 3e6 / s, above 2 omega for the block's slowest modes,
-// omega ~ pi c_s / L ~ 3e5 rad/s with c_s = 1 m/s) with the step estimated every step,
+// Damped (mass-proportional, 3e6 / s, ten times an estimate of the block's slowest
+// angular frequency, pi c_s / L ~ 3e5 rad/s with c_s = 1 m/s; 1e6 / s does not hold the
+// compression in all directions, docs/stability.md) with the step estimated every step,
 // the releases along x and in all directions come to rest in the stress-free state.
 #include "sim_fixtures.hpp"
 

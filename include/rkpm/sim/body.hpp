@@ -168,10 +168,11 @@ struct DirectorStep {
 DirectorStep advance_director(Body& body, double dt);
 
 // How far the director is from its own equilibrium, where Eq. 5 at rest asks that the
-// part of dF/dh across h vanish: the largest |dh/dt| of the last update over L mu, at
-// this rank's particles off the anchored surface. Dimensionless (the molecular field
-// over the shear modulus); at rest the co-rotational part of dh/dt is zero, so this is
-// the Allen-Cahn part alone. 0 when the director does not evolve (L = 0 or no update yet).
+// part of dF/dh across h vanish: the largest |(I - h h^T) dF/dh| over mu at this rank's
+// particles off the anchored surface, from the current state (the Frank divergence of
+// the last force evaluation). Dimensionless (the molecular field over the shear
+// modulus); at rest it is |dh/dt| / (L mu). Measured whatever L, a held director (L = 0)
+// too; 0 for a body without a director.
 double director_residual(const Body& body);
 
 // The largest step at which the explicit director update (Eq. 5-7) is stable at the

@@ -165,21 +165,22 @@ struct LiquidCrystalElastomer {
     return corotational_rate - 0.5 * (velocity_gradient.transpose() * h - spin * h);
   }
 
-  // Upper bound [Pa] on the stiffness of the director relaxation at fixed F: the largest
-  // eigenvalue of the linearised -(I - h h^T) dF/dh as a function of h, so that the
-  // explicit update h += dt L (...) is stable for dt < 2 / (L bound). The local part is
-  // the Hessian of W in h, mu (s-1)/s (F F^T + (s-1) F h0 (F h0)^T) (from
-  // director_driving_force), by its largest eigenvalue in absolute value; the Frank part
-  // is a diffusion of h in X with coefficient 2 kf J F^-1 F^-T, and the discrete
-  // Laplacian on particles `spacing` apart has eigenvalues up to 4 / spacing^2 per
-  // direction.
+  // Upper bound [Pa] on the stiffness of the director relaxation at fixed F, so that the
+  // explicit update h += dt L (...) is stable for dt < 2 / (L bound). Local part: the
+  // relaxation is dh/dt = L (I - h h^T) M h with M = mu (s-1)/s (F F^T + (s-1) F h0 (F h0)^T)
+  // (director_driving_force is -M h), whose linearisation in the tangent plane at the
+  // equilibrium has the rates L (lambda_i - lambda_1): at most the spread
+  // lambda_max - lambda_min of M (mu (s-1)^2 / s at rest). Frank part: a diffusion of h in
+  // X with coefficient D = 2 kf J C^-1 (frank_flux); the discrete Laplacian on particles
+  // `spacing` apart has eigenvalues up to 4 / spacing^2 per direction, 4 tr(D) / spacing^2
+  // in all.
   double director_stiffness(const Mat3& F, const Vec3& h0, double spacing) const {
     const Kinematics k(F);
     const Vec3 Fh0 = F * h0;
-    const Mat3 hessian = (mu * (s - 1.0) / s) * (F * F.transpose() + (s - 1.0) * Fh0 * Fh0.transpose());
-    const Vec3 eigenvalues = symmetric_eigenvalues(hessian);  // ascending
-    const double local = std::max(std::abs(eigenvalues[0]), std::abs(eigenvalues[2]));
-    const double frank = 2.0 * frank_coefficient() * k.J * k.F_inv.squaredNorm() * 12.0 / (spacing * spacing);
+    const Mat3 M = (mu * (s - 1.0) / s) * (F * F.transpose() + (s - 1.0) * Fh0 * Fh0.transpose());
+    const Vec3 eigenvalues = symmetric_eigenvalues(M);  // ascending
+    const double local = eigenvalues[2] - eigenvalues[0];
+    const double frank = 2.0 * frank_coefficient() * k.J * k.F_inv.squaredNorm() * 4.0 / (spacing * spacing);
     return local + frank;
   }
 

@@ -61,7 +61,7 @@ ParamTable integrator_section() {
           .help("Fraction of the estimated stable time step that is taken when dt = 0."),
       ParamSpec::choice("stable_step", {"wave_speed", "measured"}).defaults(std::string("wave_speed"))
           .help("How the stable step is estimated. wave_speed: the shortest spacing over the material's "
-                "wave speed at each particle, and each term's own limit. measured: the bodies' wave-speed "
+                "wave speed at each particle, each term's own limit, and an LCE director's (2 / (L times its stiffness), docs/stability.md). measured: the bodies' wave-speed "
                 "step calibrated by 2 / omega_max, the largest natural frequency of the discretisation and "
                 "the terms, measured by power iteration at the start and every 1000 steps (a few tens of "
                 "force evaluations each). On the RBC shell it is 1.9x the wave-speed step; where a term's own "
@@ -74,9 +74,10 @@ ParamTable integrator_section() {
                 "(docs/stability.md). A step that changes in most steps conserves energy slightly worse "
                 "(measured with a schedule that re-estimated in most steps)."),
       ParamSpec::real("damping", "1/s").at_least(0).defaults(0.0)
-          .help("Mass-proportional damping coefficient c: force -c m v on every particle. Above twice "
-                "the body's slowest angular frequency (about pi c_s / L) and with stable_step_interval = 1 "
-                "it carries releases from stretch 3 or compression 0.3, in all directions too, to rest "
+          .help("Mass-proportional damping coefficient c: force -c m v on every particle. With "
+                "stable_step_interval = 1, c = 3e6 / s (measured: ten times an estimate pi c_s / L of the "
+                "slowest angular frequency of a 10 um block with c_s = 1 m/s; 1e6 / s is not enough) "
+                "carries releases from stretch 3 or compression 0.3, in all directions too, to rest "
                 "(docs/stability.md)."),
       ParamSpec::integer("max_steps").at_least(1).defaults(std::int64_t{10000000})
           .help("Hard limit on the number of steps; reaching it before t_end (or convergence) ends the run with exit code 4."),
