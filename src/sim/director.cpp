@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <vector>
 
 namespace rkpm::sim {
 
@@ -28,20 +27,14 @@ double director_residual(const Body& body) {
   if (!body.director) return 0.0;
   const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
   const DirectorField& dir = *body.director;
-  // The anchored surface's director is set to the normal, not relaxed: its field is moot.
-  std::vector<char> set_by_anchoring(dir.h.size(), 0);
-  if (dir.anchored)
-    for (const Index I : body.cloud.boundary_particles)
-      if (static_cast<std::size_t>(I) < set_by_anchoring.size()) set_by_anchoring[I] = 1;
   double largest = 0.0;
   for (Index I = body.owned_begin(); I < body.owned_end(); ++I) {
-    if (set_by_anchoring[I]) continue;
-    const Vec3& h = dir.h[I];
-    // dF/dh as director_rate forms it, from the state (F, h, Grad h and the Frank
-    // divergence of the last force evaluation), so a held director is measured too.
+    // The anchored surface's director is set to the normal, not relaxed: its field is moot.
+    if (dir.anchored && body.cloud.boundary_index[I] >= 0) continue;
+    // From the state (F, h, Grad h and the Frank divergence of the last force
+    // evaluation), so a held director is measured too.
     const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
-    const Vec3 dF_dh = model.director_driving_force(body.F[I], director_point(dir, I)) - frank;
-    largest = std::max(largest, (dF_dh - h * h.dot(dF_dh)).norm());
+    largest = std::max(largest, model.transverse_molecular_field(body.F[I], director_point(dir, I), frank).norm());
   }
   return largest / model.mu;
 }

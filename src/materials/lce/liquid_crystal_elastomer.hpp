@@ -154,13 +154,22 @@ struct LiquidCrystalElastomer {
     return (2.0 * frank_coefficient() * k.J) * (d.grad_h * k.F_inv * k.F_inv_T);
   }
 
+  // The part of dF/dh across h, (I - h h^T) dF/dh [Pa], with
+  // frank_divergence = Div_X(frank_flux): what Eq. 5 drives the director by, zero at the
+  // director's own equilibrium.
+  Vec3 transverse_molecular_field(const Mat3& F, const DirectorPoint& d,
+                                  const Vec3& frank_divergence = Vec3::Zero()) const {
+    const Vec3& h = d.h;
+    const Vec3 dF_dh = director_driving_force(F, d) - frank_divergence;
+    return dF_dh - h * h.dot(dF_dh);
+  }
+
   // dh/dt [1/s] from Eq. 5 and 7 (see the header comment), given the velocity
   // gradient l = dF/dt F^-1 and frank_divergence = Div_X(frank_flux) [Pa].
   Vec3 director_rate(const Mat3& F, const DirectorPoint& d, const Mat3& velocity_gradient,
                      const Vec3& frank_divergence = Vec3::Zero()) const {
     const Vec3& h = d.h;
-    const Vec3 dF_dh = director_driving_force(F, d) - frank_divergence;
-    const Vec3 corotational_rate = -mobility * (dF_dh - h * h.dot(dF_dh));
+    const Vec3 corotational_rate = -mobility * transverse_molecular_field(F, d, frank_divergence);
     const Mat3 spin = 0.5 * (velocity_gradient - velocity_gradient.transpose());
     return corotational_rate - 0.5 * (velocity_gradient.transpose() * h - spin * h);
   }
