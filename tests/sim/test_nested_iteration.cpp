@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -156,6 +157,46 @@ TEST(NestedIteration, CarryingTheStateReproducesALinearDisplacementField) {
   }
   std::printf("linear field carried from %zu to %zu particles: worst error %.2e m\n", from.size(), to.size(), worst);
   EXPECT_LT(worst, 1e-13);
+}
+
+// The RK shape functions do not interpolate, so setting the finer cloud's generalized
+// displacements to the coarser field's values would give it a smoothed copy of that
+// field. carry_state matches the finer cloud's physical displacement to the coarser
+// field at its particles instead: on a curved field the mismatch must be far below what
+// the plain copy leaves (the plain copy is what this test measures as the reference).
+TEST(NestedIteration, TheCarriedPhysicalDisplacementMatchesTheCoarseFieldAtTheFineParticles) {
+  testing::ScopedThreads one(1);
+  auto fine = testing::build_from_text(block_scene("[0.5]", false));
+  auto coarse = build_world(scene::at_resolution(fine.scene, 0.5));
+  const auto curved = [](const Vec3& X) {
+    return Vec3(0.02 * X.x() * X.x(), -0.03 * X.y() * X.z(), 0.01 * std::sin(4.0 * X.x()) + 0.02 * X.y() * X.y());
+  };
+  Body& from = *coarse->bodies[0];
+  for (std::size_t I = 0; I < from.size(); ++I) from.d[I] = curved(from.cloud.X[I]);
+  Body& to = *fine.world->bodies[0];
+  to.constraints = EssentialBC();
+
+  // The coarser cloud's field at the finer particles, u_h(X_J) = sum_I Psi_I(X_J) d_I.
+  const rk::RKApproximation from_rk = approximation(from);
+  std::vector<Vec3> target(to.size(), Vec3::Zero());
+  rk::ShapeValues sv;
+  for (std::size_t J = 0; J < to.size(); ++J) {
+    ASSERT_TRUE(from_rk.evaluate(to.cloud.X[J], sv, false));
+    for (std::size_t k = 0; k < sv.ids.size(); ++k) target[J] += sv.psi[k] * from.d[sv.ids[k]];
+  }
+  double largest = 0.0, plain_copy = 0.0;
+  for (std::size_t J = 0; J < to.size(); ++J) {
+    largest = std::max(largest, target[J].norm());
+    plain_copy = std::max(plain_copy, (rk::interpolate(to.interpolation, target, static_cast<Index>(J)) - target[J]).norm());
+  }
+  carry_state(*coarse, *fine.world);
+  std::vector<Vec3> u;
+  physical_displacement(to, u);
+  double matched = 0.0;
+  for (std::size_t J = 0; J < to.size(); ++J) matched = std::max(matched, (u[J] - target[J]).norm());
+  std::printf("curved field carried: largest %.3e, mismatch %.2e (plain copy %.2e)\n", largest, matched, plain_copy);
+  EXPECT_GT(plain_copy, 1e-3 * largest) << "the field must be curved enough for the plain copy to miss it";
+  EXPECT_LT(matched, 0.2 * plain_copy);
 }
 
 // The criterion for a faster route: its final displacements agree with a
