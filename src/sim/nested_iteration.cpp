@@ -30,17 +30,20 @@ namespace {
 // less than a tenth of the largest mismatch, or when that is below 1e-6 of the largest
 // target (a linear field: at once), or after `max_sweeps`. On the RBC levels: 7-10
 // sweeps, the mismatch left 0.1-0.4 % of the largest displacement.
-void match_physical_displacement(const par::Comm& comm, Body& body, const std::vector<Vec3>& target,
-                                 int max_sweeps = 50) {
+Transfer match_physical_displacement(const par::Comm& comm, Body& body, const std::vector<Vec3>& target,
+                                     int max_sweeps = 50) {
   const Index begin = body.owned_begin(), end = body.owned_end();
   for (Index J = begin; J < end; ++J) body.d[J] = target[J];
   double largest = 0.0;
   for (Index J = begin; J < end; ++J) largest = std::max(largest, target[J].norm());
   largest = comm.max(largest);
-  if (!(largest > 0.0)) return;
+  Transfer done;
+  if (!(largest > 0.0)) return done;
   std::vector<Vec3> mismatch(body.size(), Vec3::Zero());
   double previous = std::numeric_limits<double>::infinity();
-  for (int sweep = 0; sweep < max_sweeps; ++sweep) {
+  // Each pass measures the mismatch of the current d, then corrects d unless it stops:
+  // the reported mismatch is that of the d the body keeps.
+  for (;;) {
     if (body.distributed()) body.ghosts.pull(body.d);
     double worst = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : worst)
@@ -49,16 +52,21 @@ void match_physical_displacement(const par::Comm& comm, Body& body, const std::v
       worst = std::max(worst, mismatch[J].norm());
     }
     worst = comm.max(worst);
-    if (worst <= 1e-6 * largest || worst > 0.9 * previous) break;
+    const bool stalled = worst > 0.9 * previous;
+    if (worst <= 1e-6 * largest || stalled || done.sweeps == max_sweeps) {
+      done.mismatch = worst / largest;
+      return done;
+    }
     previous = worst;
     for (Index J = begin; J < end; ++J) body.d[J] += mismatch[J];
+    ++done.sweeps;
   }
 }
 
 // One body's state at the other body's particles (see carry_state). Distributed: every
 // rank gathers the whole coarse state (a coarse level is small) and sets its own fine
 // particles; the ghosts' values follow at the next force evaluation.
-void carry_body(const par::Comm& comm, const Body& from, Body& to) {
+Transfer carry_body(const par::Comm& comm, const Body& from, Body& to) {
   const bool director = from.director.has_value() && to.director.has_value();
   const std::vector<Vec3> from_d = par::gather_owned(comm, from.d, from.owned_begin(), from.owned_end());
   const std::vector<Vec3> from_h =
@@ -100,16 +108,28 @@ void carry_body(const par::Comm& comm, const Body& from, Body& to) {
                                      from.name, from.size(), to.size(), e.what()));
       }
   }
-  match_physical_displacement(comm, to, target);
+  const Transfer done = match_physical_displacement(comm, to, target);
   to.constraints.impose(to.d, to.v);
+  return done;
+}
+
+void log_transfer(std::ostream& log, const Transfer& done, std::size_t particles) {
+  log << fmt::format("  state carried to {} particles in {} sweeps, mismatch {:.1e} of the largest displacement\n",
+                     particles, done.sweeps, done.mismatch);
 }
 
 }  // namespace
 
-void carry_state(const World& from, World& to) {
+Transfer carry_state(const World& from, World& to) {
   if (from.bodies.size() != to.bodies.size())
     throw std::logic_error("carry_state: the two worlds have different body lists");
-  for (std::size_t b = 0; b < from.bodies.size(); ++b) carry_body(*to.comm, *from.bodies[b], *to.bodies[b]);
+  Transfer all;
+  for (std::size_t b = 0; b < from.bodies.size(); ++b) {
+    const Transfer one = carry_body(*to.comm, *from.bodies[b], *to.bodies[b]);
+    all.sweeps = std::max(all.sweeps, one.sweeps);
+    all.mismatch = std::max(all.mismatch, one.mismatch);
+  }
+  return all;
 }
 
 std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
@@ -122,7 +142,12 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
     const auto start = Clock::now();
     const scene::Scene level_scene = scene::at_resolution(scene, factors[l]);
     std::unique_ptr<World> level = build_world(level_scene, *world.comm);
-    if (previous) carry_state(*previous, *level);
+    if (previous) {
+      const Transfer handed_on = carry_state(*previous, *level);
+      runs.back().transfer_sweeps = handed_on.sweeps;
+      runs.back().transfer_mismatch = handed_on.mismatch;
+      log_transfer(log, handed_on, level->particle_count());
+    }
     Integrator integrator(*level, integrator_settings(level_scene));
     const std::int64_t max_steps = level_scene.integrator.integer("max_steps");
     try {
@@ -144,11 +169,16 @@ std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& worl
     run.force_evaluations = integrator.force_evaluations();
     run.residual = integrator.residual();
     run.converged = integrator.converged();
-    if (l + 1 == factors.size()) carry_state(*previous, world);
+    if (l + 1 == factors.size()) {
+      const Transfer handed_on = carry_state(*previous, world);
+      run.transfer_sweeps = handed_on.sweeps;
+      run.transfer_mismatch = handed_on.mismatch;
+    }
     run.wall_time = std::chrono::duration<double>(Clock::now() - start).count();
     log << fmt::format("nested level {}/{}: factor {}, {} particles, {} after {} steps (residual {:.2e}), {:.1f} s\n",
                        l + 1, factors.size(), run.factor, run.particles,
                        run.converged ? "converged" : "not converged", run.steps, run.residual, run.wall_time);
+    if (l + 1 == factors.size()) log_transfer(log, {run.transfer_sweeps, run.transfer_mismatch}, world.particle_count());
     runs.push_back(run);
   }
   return runs;

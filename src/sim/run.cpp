@@ -364,6 +364,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       j.set("wall_time", l.wall_time);
       j.set("residual", l.residual);
       j.set("converged", l.converged);
+      j.set("transfer_sweeps", static_cast<std::int64_t>(l.transfer_sweeps));
+      j.set("transfer_mismatch", l.transfer_mismatch);
       list.push_back(std::move(j));
     }
     json.set("nested_levels", std::move(list));

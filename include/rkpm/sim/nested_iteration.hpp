@@ -23,6 +23,16 @@ struct LevelRun {
   double wall_time = 0.0;       // set-up, relaxation and the transfer to the next level [s]
   double residual = 0.0;        // at the level's end (the relaxation's force measure)
   bool converged = false;
+  int transfer_sweeps = 0;      // the sweeps that carried this level's state to the next cloud
+  double transfer_mismatch = 0.0;  // what they left, over the largest displacement (carry_state)
+};
+
+// How closely a carried state arrived: the largest sweeps over the bodies, and the largest
+// mismatch |u(X_J) - u_h(X_J)| left, over the largest carried displacement (0 for a body
+// at rest).
+struct Transfer {
+  int sweeps = 0;
+  double mismatch = 0.0;
 };
 
 // Carries the state of `from` to `to` (the same scene at another resolution; bodies
@@ -33,7 +43,7 @@ struct LevelRun {
 // interpolated the same way and renormalised; velocities are zero. The supports'
 // prescribed values are imposed afterwards. Throws SetupError when a particle of `to`
 // lies outside the reach of `from`'s approximation.
-void carry_state(const World& from, World& to);
+Transfer carry_state(const World& from, World& to);
 
 // Relaxes the scene on each level of [integrator] nested_levels, coarsest first, and
 // carries the last level's state into `world` (built from the scene itself). Returns
