@@ -338,6 +338,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.damping = p.real("damping");
   s.relax_force_tol = p.real("relax_force_tol");
   s.relax_velocity_tol = p.real("relax_velocity_tol");
+  s.relax_director_tol = p.real("relax_director_tol");
   s.mass_scaling = p.flag("mass_scaling");
   s.contact_mass_scaling = p.flag("contact_mass_scaling");
   s.fire = FireParameters::named(p.choice("relax_method"));

@@ -28,6 +28,7 @@ double director_residual(const Body& body) {
   const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
   const DirectorField& dir = *body.director;
   double largest = 0.0;
+#pragma omp parallel for schedule(static) reduction(max : largest)
   for (Index I = body.owned_begin(); I < body.owned_end(); ++I) {
     // The anchored surface's director is set to the normal, not relaxed: its field is moot.
     if (dir.anchored && body.cloud.boundary_index[I] >= 0) continue;

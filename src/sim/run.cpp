@@ -112,8 +112,14 @@ io::Json energy_json(const EnergyLedger& e) {
 // below its target keeps going while the kinetic energy is not (a shape still creeping
 // along a soft mode, docs/relaxation.md), and the line says which one it waits for.
 std::string relax_progress(const Integrator& integrator, const IntegratorSettings& settings) {
-  return fmt::format("residual {:.2e} (target {:.0e}), kinetic {:.1e} (target {:.0e})", integrator.residual(),
-                     settings.relax_force_tol, integrator.kinetic_measure(), settings.relax_velocity_tol);
+  std::string line = fmt::format("residual {:.2e} (target {:.0e}), kinetic {:.1e} (target {:.0e})",
+                                 integrator.residual(), settings.relax_force_tol, integrator.kinetic_measure(),
+                                 settings.relax_velocity_tol);
+  // Collective, like the line's other figures: every rank builds the line.
+  if (settings.relax_director_tol > 0.0)
+    line += fmt::format(", director {:.1e} (target {:.0e})", integrator.director_residual(),
+                        settings.relax_director_tol);
+  return line;
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ struct IntegratorSettings {
   double damping = 0.0;          // mass-proportional damping coefficient [1/s]
   double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
+  double relax_director_tol = 0.0;   // director_residual bound; 0: the director is not part of the stop
   FireParameters fire;           // relax only: the FIRE variant (fire.hpp)
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool contact_mass_scaling = false;  // relax only: terms raise their particles' inertia to the bodies' step (Term::scale_inertia_to)
@@ -78,7 +79,8 @@ class Integrator {
   // Relaxation: the convergence measures after the last step.
   double residual() const { return residual_; }
   // The directors' distance from their own equilibrium (sim::director_residual), the
-  // largest over the bodies and ranks; not part of converged(). Collective.
+  // largest over the bodies and ranks; part of converged() only with relax_director_tol.
+  // Collective.
   double director_residual() const;
   double kinetic_measure() const { return kinetic_measure_; }
   bool converged() const;

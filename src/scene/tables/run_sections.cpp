@@ -87,6 +87,11 @@ ParamTable integrator_section() {
       ParamSpec::real("relax_velocity_tol", "-").greater_than(0).defaults(1e-8)
           .help("relax mode: converged when, in addition, the kinetic energy falls below this fraction "
                 "of mu V summed over the bodies (shear modulus times volume)."),
+      ParamSpec::real("relax_director_tol", "-").at_least(0).defaults(0.0)
+          .help("relax mode: with LCE bodies, converged only when, in addition, the director is at its own "
+                "equilibrium: the largest part of dF/dh across h, over the shear modulus (summary.json's "
+                "director_residual; for s = 2 at rest, 0.01 is a director about 1 degree off), falls below this. 0 = "
+                "the director is not part of the stop (it is reported only; docs/relaxation.md)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
       ParamSpec::choice("relax_method", {"fire", "fire2"}).defaults(std::string("fire"))
