@@ -400,6 +400,9 @@ void Integrator::update_convergence(double kinetic_of_motion) {
   }
   residual_ = world_.comm->max(residual);
   kinetic_measure_ = kinetic_of_motion / reference_energy_;
+  // A pass over the particles every step, only when the scene asks for the director in
+  // the stop.
+  if (settings_.relax_director_tol > 0.0) director_measure_ = director_residual();
 }
 
 double Integrator::director_residual() const {
@@ -408,12 +411,9 @@ double Integrator::director_residual() const {
   return world_.comm->max(largest);
 }
 
-// The director is checked last, and only when asked for: it costs a pass over the
-// particles, and the forces and the kinetic measure are the same on every rank, so every
-// rank reaches the collective director_residual or none does.
 bool Integrator::converged() const {
   if (!(residual_ < settings_.relax_force_tol && kinetic_measure_ < settings_.relax_velocity_tol)) return false;
-  return !(settings_.relax_director_tol > 0.0) || director_residual() < settings_.relax_director_tol;
+  return !(settings_.relax_director_tol > 0.0) || director_measure_ < settings_.relax_director_tol;
 }
 
 // Every rank checks its own particles; the lowest rank that finds a failure states the

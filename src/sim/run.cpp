@@ -115,9 +115,8 @@ std::string relax_progress(const Integrator& integrator, const IntegratorSetting
   std::string line = fmt::format("residual {:.2e} (target {:.0e}), kinetic {:.1e} (target {:.0e})",
                                  integrator.residual(), settings.relax_force_tol, integrator.kinetic_measure(),
                                  settings.relax_velocity_tol);
-  // Collective, like the line's other figures: every rank builds the line.
   if (settings.relax_director_tol > 0.0)
-    line += fmt::format(", director {:.1e} (target {:.0e})", integrator.director_residual(),
+    line += fmt::format(", director {:.1e} (target {:.0e})", integrator.director_measure(),
                         settings.relax_director_tol);
   return line;
 }

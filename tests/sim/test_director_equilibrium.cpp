@@ -8,6 +8,8 @@
 //   (twice) and mu (s-1), whose spread mu (s-1)^2/s is the stiffness on the unit sphere,
 //   so the step is 2 s / (L mu (s-1)^2); a mobility at which it binds relaxes to rest
 //   instead of swinging.
+// - The stop that waits for it (relax_director_tol): a slow director is still turning
+//   when the forces settle, and with the tolerance the relaxation goes on until it rests.
 #include "sim_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -113,15 +115,16 @@ struct SlowDirectorStop {
 
 SlowDirectorStop relax_slow_director(double director_tol) {
   testing::ScopedThreads one(1);
-  auto sw = testing::build_from_text(block("1e2", "0", 3));
+  std::string text = block("1e2", "0", 3);
+  text.replace(text.find("mode = \"relax\""), 14, "mode = \"relax\"\nrelax_director_tol = " + std::to_string(director_tol));
+  auto sw = testing::build_from_text(text);
+  EXPECT_EQ(sw.settings.relax_director_tol, director_tol) << "read from the scene's [integrator] table";
   Body& body = *sw.world->bodies.front();
   for (std::size_t i = 0; i < body.director->h.size(); ++i) {
     const double theta = i % 2 == 0 ? 0.5 : -0.5;
     body.director->h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
   }
-  IntegratorSettings settings = sw.settings;
-  settings.relax_director_tol = director_tol;
-  Integrator integrator(*sw.world, settings);
+  Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
   SlowDirectorStop stop;
   while (!(stop.converged = integrator.converged()) && sw.world->step < 100000) integrator.step();

@@ -202,7 +202,7 @@ TEST(NestedIteration, TheCarriedPhysicalDisplacementMatchesTheCoarseFieldAtTheFi
   EXPECT_NEAR(done.mismatch, matched / largest, 1e-3 * matched / largest) << "the report is the mismatch left";
   std::printf("curved field carried: largest %.3e, mismatch %.2e (plain copy %.2e)\n", largest, matched, plain_copy);
   EXPECT_GT(plain_copy, 1e-3 * largest) << "the field must be curved enough for the plain copy to miss it";
-  EXPECT_LT(matched, 0.2 * plain_copy);
+  EXPECT_LT(matched, 0.1 * plain_copy);  // measured: 1/31 of it
 }
 
 // The criterion for a faster route: its final displacements agree with a

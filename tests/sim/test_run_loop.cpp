@@ -336,6 +336,19 @@ TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
   // The level's last progress line shows the residual it converged with.
   const double shown = std::stod(last[1].str()), reported = std::stod(result[1].str());
   EXPECT_NEAR(shown, reported, 0.006 * reported) << r.log;
+  // Then the transfer of the level's state to the scene's own cloud, its sweeps and the
+  // mismatch it left, in the log and in summary.json alike.
+  std::smatch carried;
+  const std::regex transfer_line(
+      R"(state carried to ([0-9]+) particles in ([0-9]+) sweeps, mismatch ([0-9.e+-]+) of the largest displacement)");
+  ASSERT_TRUE(std::regex_search(r.log, carried, transfer_line)) << r.log;
+  EXPECT_GT(static_cast<std::size_t>(carried.position()), static_cast<std::size_t>(result.position())) << r.log;
+  const fs::path summary = dir / "out" / "summary.json";
+  EXPECT_EQ(std::stoi(carried[1].str()), static_cast<int>(summary_number(summary, "total_particles")));
+  EXPECT_EQ(std::stoi(carried[2].str()), static_cast<int>(summary_number(summary, "transfer_sweeps")));
+  const double mismatch = summary_number(summary, "transfer_mismatch");
+  EXPECT_NEAR(std::stod(carried[3].str()), mismatch, 0.06 * mismatch) << "printed to 2 digits";
+  EXPECT_LT(mismatch, 0.05) << "the carried field must arrive within a few per cent of the largest displacement";
   fs::remove_all(dir);
 }
 

@@ -79,9 +79,11 @@ class Integrator {
   // Relaxation: the convergence measures after the last step.
   double residual() const { return residual_; }
   // The directors' distance from their own equilibrium (sim::director_residual), the
-  // largest over the bodies and ranks; part of converged() only with relax_director_tol.
-  // Collective.
+  // largest over the bodies and ranks, at the current state. Collective.
   double director_residual() const;
+  // The same, measured after the last step when relax_director_tol > 0 (part of
+  // converged() then); 0 otherwise.
+  double director_measure() const { return director_measure_; }
   double kinetic_measure() const { return kinetic_measure_; }
   bool converged() const;
   // The step was clamped to the stable estimate (a warning for the user).
@@ -154,7 +156,7 @@ class Integrator {
   bool dt_clamped_ = false;
   EnergyLedger ledger_;
   double term_power_ = 0.0, active_power_ = 0.0, support_power_ = 0.0;
-  double residual_ = 0.0, kinetic_measure_ = 0.0, min_J_ = 1.0;
+  double residual_ = 0.0, kinetic_measure_ = 0.0, director_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
   std::vector<double> body_shear_modulus_;  // mean_shear_modulus of each body (the residual's scale)
   double reference_energy_ = 0.0;           // sum over bodies of mu V (the kinetic measure's scale)

@@ -20,7 +20,8 @@ struct LevelRun {
   std::size_t particles = 0;
   std::int64_t steps = 0;       // relaxation steps
   std::int64_t force_evaluations = 0;  // Integrator::force_evaluations at the level's end
-  double wall_time = 0.0;       // set-up, relaxation and the transfer to the next level [s]
+  double wall_time = 0.0;       // set-up, the transfer into it, relaxation (and for the last
+                                // level the transfer to the scene's own cloud) [s]
   double residual = 0.0;        // at the level's end (the relaxation's force measure)
   bool converged = false;
   int transfer_sweeps = 0;      // the sweeps that carried this level's state to the next cloud
@@ -47,7 +48,7 @@ Transfer carry_state(const World& from, World& to);
 
 // Relaxes the scene on each level of [integrator] nested_levels, coarsest first, and
 // carries the last level's state into `world` (built from the scene itself). Returns
-// one record per level; writes one line per level to `log`. A level that does not
+// one record per level; writes one line per level and one per transfer to `log`. A level that does not
 // converge within max_steps still hands on its state (the fine run decides
 // convergence); a level that blows up throws BlowUp, its message naming the level.
 // `after_step`, when given, is called after every step of a level with the level's
