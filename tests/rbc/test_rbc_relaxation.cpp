@@ -21,14 +21,16 @@ using rkpm::sim::ShapeReport;
 
 // The default scene's physics at face_cells 12, layers 3 (2,598 particles). The
 // driver keys are parameters so that the control is the same text without them.
-std::string coarse_scene(const std::string& activity, double target, double thickness = 0.5e-6) {
+// criteria_scale multiplies both relaxation criteria (1e-4 mu, 1e-8).
+std::string coarse_scene(const std::string& activity, double target, double thickness = 0.5e-6,
+                         double criteria_scale = 1.0) {
   return fmt::format(R"(
 [scene]
 name = "rbc_coarse"
 [integrator]
 mode = "relax"
-relax_force_tol = 1e-4
-relax_velocity_tol = 1e-8
+relax_force_tol = {}
+relax_velocity_tol = {}
 contact_mass_scaling = true
 [[body]]
 name = "cell"
@@ -45,7 +47,7 @@ mu = 1e4
 bulk = 1e5
 s = 2.0
 kappa = 1e-11
-mobility = 1e3
+mobility = 0.0
 {}
 [body.director]
 initial = "surface_normal"
@@ -63,12 +65,13 @@ surface = "inner"
 distance = 0.2e-6
 pressure = 1e4
 )",
-                     thickness, activity, target);
+                     1e-4 * criteria_scale, 1e-8 * criteria_scale, thickness, activity, target);
 }
 
 struct Relaxed {
   ShapeReport initial, final;
   double max_displacement = 0.0;  // max |x - X| over the particles [m]
+  std::vector<rkpm::Vec3> displacement;  // generalized displacements d at the end
   bool converged = false;
 };
 
@@ -89,6 +92,7 @@ Relaxed relax(const std::string& text) {
   }
   out.final = rkpm::sim::final_shape(body);
   for (const auto& d : body.d) out.max_displacement = std::max(out.max_displacement, d.norm());
+  out.displacement = body.d;
   return out;
 }
 
@@ -136,8 +140,8 @@ TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
 }
 
 // The seed's other wall thickness, "about 0.3 um", with the same driver keys: the
-// bending part of the layer activity follows T / zeta_reference_thickness (0.43 here;
-// without the scaling this shell ends at 0.49, on the edge of the criterion).
+// bending part of the layer activity follows T / zeta_reference_thickness (measured
+// with the director relaxing, mobility = 1e3: 0.43 here, 0.49 without the scaling).
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
   constexpr double seed_wall_thickness = 0.3e-6;  // [m]
   const Relaxed r = relax(coarse_scene(kDriver, 0.9, seed_wall_thickness));
@@ -145,6 +149,25 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
   // The wall on the axis ends thinner than it started (the contractile inner half
   // squeezes it).
   EXPECT_LT(r.final.wall_thickness_centre, seed_wall_thickness);
+}
+
+// The director is carried by the wall (mobility = 0), so the relaxation's stop is a
+// state at rest: ten times tighter criteria move it by 4.6e-4 of the largest
+// displacement (the relaxation issue's bound for the same equilibrium is 1e-3). With
+// the director relaxing (mobility = 1e3) this shell's stop is 1.4e-2 from its rest,
+// h_min/h_max 0.459 against 0.452, and the default cloud's faces crept apart long
+// after the scene's stop (docs/relaxation.md, "The director carried by the wall").
+TEST(RedBloodCell, TheDiscIsAtRestWhereTheRelaxationStops) {
+  const Relaxed stop = relax(coarse_scene(kDriver, 0.9));
+  const Relaxed rest = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 0.1));
+  ASSERT_TRUE(stop.converged);
+  ASSERT_TRUE(rest.converged);
+  ASSERT_EQ(stop.displacement.size(), rest.displacement.size());
+  double largest_difference = 0.0;
+  for (std::size_t i = 0; i < stop.displacement.size(); ++i)
+    largest_difference = std::max(largest_difference, (stop.displacement[i] - rest.displacement[i]).norm());
+  EXPECT_LT(largest_difference, 1e-3 * rest.max_displacement);
+  EXPECT_NEAR(stop.final.h_min / stop.final.h_max, rest.final.h_min / rest.final.h_max, 2e-3);
 }
 
 TEST(RedBloodCell, WithoutDriverTheShellStaysWhereItStarted) {
