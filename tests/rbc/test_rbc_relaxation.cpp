@@ -104,10 +104,12 @@ zeta_layer = "inner"
 zeta_rim = 3e4
 zeta_rim_power = 2
 zeta_rim_layer = "outer"
-zeta_reference_thickness = 0.5e-6)";
+zeta_reference_thickness = 0.5e-6
+zeta_rim_fold_share = 0.421)";
 
 // The shape criteria of the scene, on the coarse shell.
-void expect_evans_fung_disc(const Relaxed& r) {
+// `largest_diameter_ratio` bounds the final over the initial diameter.
+void expect_evans_fung_disc(const Relaxed& r, double largest_diameter_ratio = 0.97) {
   ASSERT_TRUE(r.converged);
   // The oblate start is convex: thickest at the centre.
   EXPECT_NEAR(r.initial.h_min / r.initial.h_max, 1.0, 0.02);
@@ -128,20 +130,28 @@ void expect_evans_fung_disc(const Relaxed& r) {
   // The diameter shrinks (the rim's outer half contracts in-plane) and the reduced
   // volume stays near the discocyte range (Evans-Fung 0.644; this coarse shell ends
   // at about 0.65, the default one at about 0.58-0.61).
-  EXPECT_LT(r.final.diameter, 0.97 * r.initial.diameter);
+  EXPECT_LT(r.final.diameter, largest_diameter_ratio * r.initial.diameter);
   EXPECT_GT(r.final.reduced_volume, 0.55);
   EXPECT_LT(r.final.reduced_volume, 0.68);
   // The run's own verdict on the four criteria above.
   EXPECT_TRUE(r.final.matches_evans_fung);
 }
 
+// The default scene's coarse shell relaxed once and shared by the tests that read it
+// (about 150 s under the sanitizers).
+const Relaxed& default_disc() {
+  static const Relaxed relaxed = relax(coarse_scene(kDriver, 0.9));
+  return relaxed;
+}
+
 TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
-  expect_evans_fung_disc(relax(coarse_scene(kDriver, 0.9)));
+  expect_evans_fung_disc(default_disc());
 }
 
 // The seed's other wall thickness, "about 0.3 um", with the same driver keys: the
 // bending part of the layer activity follows T / zeta_reference_thickness (measured
-// with the director relaxing, mobility = 1e3: 0.43 here, 0.49 without the scaling).
+// with the director relaxing, mobility = 1e3: 0.43 here, 0.49 without the scaling)
+// and the rim's amplitude falls to 0.67 of the 0.5 um wall's (zeta_rim_fold_share).
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
   constexpr double seed_wall_thickness = 0.3e-6;  // [m]
   const Relaxed r = relax(coarse_scene(kDriver, 0.9, seed_wall_thickness));
@@ -157,8 +167,18 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
 // the director relaxing (mobility = 1e3) this shell's stop is 1.4e-2 from its rest,
 // h_min/h_max 0.459 against 0.452, and the default cloud's faces crept apart long
 // after the scene's stop (docs/relaxation.md, "The director carried by the wall").
+// A wall 1.5 times the seed's T with the same driver keys: zeta_rim_fold_share doubles
+// the rim's activity to hold the thicker wall's fold open. Measured: h_min/h_max 0.485,
+// RMS 4.3 % of D, D 9.80 um from 10 um (the thick wall shrinks less than the others:
+// hence 0.99). Without the share (zeta_rim_fold_share = 0) the same shell ends at 0.543,
+// RMS 6.3 %, D 10.16 um: not biconcave.
+TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
+  const Relaxed r = relax(coarse_scene(kDriver, 0.9, 0.75e-6));
+  expect_evans_fung_disc(r, 0.99);
+}
+
 TEST(RedBloodCell, TheDiscIsAtRestWhereTheRelaxationStops) {
-  const Relaxed stop = relax(coarse_scene(kDriver, 0.9));
+  const Relaxed& stop = default_disc();
   const Relaxed rest = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 0.1));
   ASSERT_TRUE(stop.converged);
   ASSERT_TRUE(rest.converged);

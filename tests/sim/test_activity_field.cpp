@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -179,6 +180,38 @@ TEST(ActivityField, AtTheReferenceThicknessTheFieldIsUnchanged) {
   const auto scaled = rkpm::sim::build_world(
       rkpm::scene::parse_scene(shell_scene(keys + "\nzeta_reference_thickness = 0.5e-6"), "activity.toml"));
   EXPECT_EQ(zeta_field(*plain->bodies.front()), zeta_field(*scaled->bodies.front()));
+}
+
+// zeta_rim_fold_share = f multiplies the rim's amplitude by (1 - f) + f (T / T_ref)^3
+// and leaves the face activity alone: with f = 0.4 the rim at 0.75 um is 1.95 times
+// (0.6 + 0.4 * 3.375) what it is at T_ref = 0.5 um, at 0.3 um 0.6864 times (0.6 + 0.4 * 0.216).
+TEST(ActivityField, FoldShareScalesTheRimWithTheCubeOfTheThickness) {
+  const std::string keys = "zeta = -8e3\nzeta_profile = \"axial\"\nzeta_rim = 3e3\nzeta_reference_thickness = 0.5e-6";
+  for (const auto& [thickness, factor] : {std::pair{0.75e-6, 1.95}, std::pair{0.3e-6, 0.6864}}) {
+    const auto plain = rkpm::sim::build_world(rkpm::scene::parse_scene(shell_scene(keys, thickness), "activity.toml"));
+    const auto folded = rkpm::sim::build_world(rkpm::scene::parse_scene(
+        shell_scene(keys + "\nzeta_rim_fold_share = 0.4", thickness), "activity.toml"));
+    const auto& body = *folded->bodies.front();
+    const auto zeta_plain = zeta_field(*plain->bodies.front()), zeta_folded = zeta_field(body);
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      const double c = body.director->h0[i].z();
+      const double rim = 3e3 * (1.0 - c * c), face = -8e3 * c * c;
+      EXPECT_NEAR(zeta_plain[i], face + rim, 1e-9);
+      EXPECT_NEAR(zeta_folded[i], face + factor * rim, 1e-9);
+    }
+  }
+}
+
+TEST(ActivityField, FoldShareWithoutAReferenceThicknessIsASetupErrorNamingTheKey) {
+  const std::string text = shell_scene("zeta_rim = 3e3\nzeta_rim_fold_share = 0.4");
+  try {
+    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "shell.toml"));
+    FAIL() << "expected a SetupError";
+  } catch (const rkpm::sim::SetupError& e) {
+    EXPECT_NE(std::string(e.what()).find("shell.toml:20"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("zeta_rim_fold_share = 0.4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("zeta_reference_thickness"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ActivityField, ReferenceThicknessWithoutAShellIsASetupErrorNamingTheKey) {

@@ -1,7 +1,7 @@
 // The spatial activity field of an active LCE body (seed Eq. 1: sigma_a = -zeta h x h),
 // from the activity settings of its [body.material] table: zeta, zeta_profile,
-// zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power, zeta_rim_layer and
-// zeta_reference_thickness.
+// zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power, zeta_rim_layer,
+// zeta_reference_thickness and zeta_rim_fold_share.
 #pragma once
 
 #include "materials/lce/settings.hpp"
@@ -16,8 +16,8 @@ namespace rkpm::materials::lce {
 // zeta_rim when zeta = 0); empty when the activity is uniform. `body` must have its
 // cloud and director field. `table` is the [body.material] table the settings were read
 // from, for the file and line of an error. `wall_thickness` is the shell generator's
-// nominal wall thickness T (0 for other clouds), which zeta_reference_thickness scales
-// by. Throws sim::SetupError naming the key for an inconsistent choice.
+// nominal wall thickness T (0 for other clouds), which zeta_reference_thickness and
+// zeta_rim_fold_share scale by. Throws sim::SetupError naming the key for an inconsistent choice.
 std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& table, const sim::Body& body,
                                    double wall_thickness, double& reference_zeta);
 

@@ -73,6 +73,13 @@ const scene::SettingsTable<Settings>& settings_table() {
                         "generator's thickness, and the part that changes the wall's area is kept: a bimetal wall bends "
                         "to curvature 3 de / (2 T) under a growth difference de between its halves, so the same shape "
                         "needs de proportional to T, while the in-plane growth does not depend on T."))
+          .bind(&Settings::zeta_rim_fold_share,
+                ParamSpec::real("zeta_rim_fold_share", "-").at_least(0).at_most(1).defaults(0.0)
+                  .help("Share f of zeta_rim, as given at T_ref = zeta_reference_thickness, that grows with the "
+                        "wall's bending stiffness (~T^3): zeta_rim is multiplied by (1 - f) + f (T / T_ref)^3, so a "
+                        "thicker wall gets a stronger rim to hold its equatorial fold open and a thinner one a weaker "
+                        "rim. 0 = zeta_rim at any thickness. Needs zeta_reference_thickness > 0. The default scene's "
+                        "0.421 is fitted to the 0.75 um wall (docs/rbc.md)."))
           .bind(&Settings::zeta_axis,
                 ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
                   .help("Axis a of the axial activity profile (normalised; must be non-zero)."));
