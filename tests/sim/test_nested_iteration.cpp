@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 namespace rkpm::sim {
 namespace {
@@ -223,6 +225,39 @@ TEST(NestedIteration, NestedLevelsAndMassScalingReachThePlainFireEquilibrium) {
   EXPECT_LT(relative_difference(nested.u, plain.u), 1e-3);
   EXPECT_LT(relative_difference(scaled.u, plain.u), 1e-3);
   EXPECT_LT(relative_difference(both.u, plain.u), 1e-3);
+}
+
+// examples/sag/sag.toml (a Mooney-Rivlin block clamped at its base, sagging under a
+// body force) with its relaxation criteria (relax_force_tol 1e-5, relax_velocity_tol
+// the default 1e-8) times `criteria_scale` and the route's keys.
+std::string sag_scene(double criteria_scale, const std::string& levels, bool mass_scaling) {
+  std::string text = testing::read_text(std::filesystem::path(RKPM_SOURCE_DIR) / "examples/sag/sag.toml");
+  const std::string criterion = "relax_force_tol = 1e-5\n";
+  const auto at = text.find(criterion);
+  if (at == std::string::npos) throw std::runtime_error("examples/sag/sag.toml: no '" + criterion + "'");
+  std::ostringstream keys;
+  keys << "relax_force_tol = " << 1e-5 * criteria_scale << "\nrelax_velocity_tol = " << 1e-8 * criteria_scale
+       << "\nnested_levels = " << levels << "\nmass_scaling = " << (mass_scaling ? "true" : "false") << "\n";
+  return text.replace(at, criterion.size(), keys.str());
+}
+
+// The relaxation issue's criterion on the sag scene: a coarser level first and mass
+// scaling, at the scene's criteria, stop within 1e-3 of the largest displacement of
+// plain FIRE at ten times tighter criteria.
+TEST(NestedIteration, TheSagSceneReachesTheSameRestByEveryRoute) {
+  testing::ScopedThreads one(1);
+  const Relaxation rest = relax(sag_scene(0.1, "[]", false));
+  const Relaxation plain = relax(sag_scene(1.0, "[]", false));
+  const Relaxation route = relax(sag_scene(1.0, "[0.5]", true));
+  std::printf("sag: plain FIRE at ten times tighter criteria %lld steps; at the scene's %lld steps, %.2e apart; a "
+              "5x5x2 level (%lld steps) and mass scaling %lld steps, %.2e apart\n",
+              static_cast<long long>(rest.steps), static_cast<long long>(plain.steps),
+              relative_difference(plain.u, rest.u), static_cast<long long>(route.coarse_steps),
+              static_cast<long long>(route.steps), relative_difference(route.u, rest.u));
+  ASSERT_TRUE(rest.converged && plain.converged && route.converged);
+  EXPECT_GT(route.coarse_steps, 0);
+  EXPECT_LT(relative_difference(plain.u, rest.u), 1e-3);
+  EXPECT_LT(relative_difference(route.u, rest.u), 1e-3);
 }
 
 // FIRE 2.0 (Guenole et al. 2020), whose uphill steps move the particles back by half a
