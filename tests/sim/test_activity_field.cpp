@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -202,38 +203,31 @@ TEST(ActivityField, FoldShareScalesTheRimWithTheCubeOfTheThickness) {
   }
 }
 
-TEST(ActivityField, FoldShareWithoutAReferenceThicknessIsASetupErrorNamingTheKey) {
-  const std::string text = shell_scene("zeta_rim = 3e3\nzeta_rim_fold_share = 0.4");
+// Builds the scene `text` (named `file`) and checks that it fails with a SetupError whose
+// message contains every one of `fragments`.
+void expect_setup_error(const std::string& text, const std::string& file, const std::vector<std::string>& fragments) {
   try {
-    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "shell.toml"));
+    rkpm::sim::build_world(rkpm::scene::parse_scene(text, file));
     FAIL() << "expected a SetupError";
   } catch (const rkpm::sim::SetupError& e) {
-    EXPECT_NE(std::string(e.what()).find("shell.toml:20"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("zeta_rim_fold_share = 0.4"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("zeta_reference_thickness"), std::string::npos) << e.what();
+    for (const auto& fragment : fragments)
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
   }
+}
+
+TEST(ActivityField, FoldShareWithoutAReferenceThicknessIsASetupErrorNamingTheKey) {
+  expect_setup_error(shell_scene("zeta_rim = 3e3\nzeta_rim_fold_share = 0.4"), "shell.toml",
+                     {"shell.toml:20", "zeta_rim_fold_share = 0.4", "zeta_reference_thickness"});
 }
 
 TEST(ActivityField, ReferenceThicknessWithoutAShellIsASetupErrorNamingTheKey) {
-  const std::string text = ball_scene("zeta = -1e3\nzeta_reference_thickness = 0.5e-6");
-  try {
-    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
-    FAIL() << "expected a SetupError";
-  } catch (const rkpm::sim::SetupError& e) {
-    EXPECT_NE(std::string(e.what()).find("ball.toml:18"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("zeta_reference_thickness"), std::string::npos) << e.what();
-  }
+  expect_setup_error(ball_scene("zeta = -1e3\nzeta_reference_thickness = 0.5e-6"), "ball.toml",
+                     {"ball.toml:18", "zeta_reference_thickness"});
 }
 
 TEST(ActivityField, LayerOnASolidBodyIsASetupErrorNamingTheKey) {
-  const std::string text = ball_scene("zeta = -1e3\nzeta_layer = \"inner\"");
-  try {
-    rkpm::sim::build_world(rkpm::scene::parse_scene(text, "ball.toml"));
-    FAIL() << "expected a SetupError";
-  } catch (const rkpm::sim::SetupError& e) {
-    EXPECT_NE(std::string(e.what()).find("ball.toml"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("zeta_layer = \"inner\""), std::string::npos) << e.what();
-  }
+  expect_setup_error(ball_scene("zeta = -1e3\nzeta_layer = \"inner\""), "ball.toml",
+                     {"ball.toml", "zeta_layer = \"inner\""});
 }
 
 }  // namespace
