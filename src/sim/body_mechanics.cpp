@@ -30,7 +30,8 @@ void pull_ghosts(Body& body, DirectorField* dir) {
 //   F_L = sum_I x_I (x) b_I(X_L)                 (and Grad_X h with the Frank term),
 //   P_L = stress(L, F_L, Grad_X h_L, flux_L),
 //   f_I += V_L P_L b_I(X_L)                      (the internal force, scattered),
-//   div_I += V_L flux_L b_I(X_L)                 (the Frank term's weak divergence),
+//   div_I += V_L flux_L b_I(X_L)                 (the Frank term's weak divergence,
+//                                                 when tracked: DirectorField),
 //   r_L = d_L - sum_I Psi_I(X_L) d_I,  f_L += W_L r_L,  f_I -= Psi_I(X_L) W_L r_L
 //                                                (the stabilization, rk/stabilization.hpp).
 // The scatter goes into per-thread buffers; on several threads or ranks it is ordered
@@ -45,10 +46,12 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
   auto& stab = body.stabilization;
   const bool stabilized = stab.active();
   const bool frank = dir != nullptr && dir->frank;
+  // The Frank flux's divergence: a second scatter channel, made only when tracked.
+  const bool divergence = frank && dir->frank_divergence_tracked;
   const int threads = rk::RowScatter::team_threads();
+  const int channels = divergence ? 2 : 1;
   auto& scatter = body.force_scatter;
-  if (!scatter.planned_for(threads)) {
-    const int channels = frank ? 2 : 1;
+  if (!scatter.planned_for(threads, channels)) {
     const auto n = static_cast<Index>(body.size());
     if (threads == 1 && !body.distributed()) {
       // One block: every sum is already in the reference order.
@@ -82,9 +85,9 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
-      const Mat3 P = stress(L, F, grad_h, flux);
+      const Mat3 P = stress(L, F, grad_h, divergence ? &flux : nullptr);
       const double w = op.weight[L];
-      if (frank) dir->frank_flux[L] = flux;
+      if (divergence) dir->frank_flux[L] = flux;
       Vec3 wr = Vec3::Zero();
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
@@ -94,23 +97,23 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
       // The row's contributions, in the order the scatter's plan lists them.
       const auto contribute = [&](const auto& add_force, const auto& add_divergence) {
         rk::scatter_row(op, grad, L, w, P, add_force);
-        if (frank) rk::scatter_row(op, grad, L, w, flux, add_divergence);
+        if (divergence) rk::scatter_row(op, grad, L, w, flux, add_divergence);
         if (stabilized) rk::scatter_residual(N, L, wr, add_force);
       };
       if (scatter.seam_row(L))
-        contribute(scatter.sink(t, 0, L), scatter.sink(t, frank ? 1 : 0, L));
+        contribute(scatter.sink(t, 0, L), scatter.sink(t, channels - 1, L));
       else
-        contribute(rk::RowScatter::AddTo{scatter.buffer(t, 0)}, rk::RowScatter::AddTo{scatter.buffer(t, frank ? 1 : 0)});
+        contribute(rk::RowScatter::AddTo{scatter.buffer(t, 0)}, rk::RowScatter::AddTo{scatter.buffer(t, channels - 1)});
     }
     energy[static_cast<std::size_t>(t)] = stabilization_energy;
 #pragma omp barrier
     // The sums hold f_int plus the stabilization's resistance; the body's force is minus that.
     scatter.reduce(t, 0, -1.0, body.force);
-    if (frank) scatter.reduce(t, 1, 1.0, dir->frank_divergence);
+    if (divergence) scatter.reduce(t, 1, 1.0, dir->frank_divergence);
   }
   // The seams (particles the rows of several threads or ranks reach), in order.
   scatter.fold(0, -1.0, body.force, false);
-  if (frank) {
+  if (divergence) {
     scatter.fold(1, 1.0, dir->frank_divergence, false);
     // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
 #pragma omp parallel for schedule(static)
@@ -128,8 +131,8 @@ void compute_internal_forces(Body& body) {
   const bool frank = dir != nullptr && dir->frank;
   std::visit(
       [&](const auto& material) {
-        const auto stress = [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3& flux) {
-          return material.first_piola(L, F, grad_h, frank ? &flux : nullptr, dir);
+        const auto stress = [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3* flux) {
+          return material.first_piola(L, F, grad_h, frank ? flux : nullptr, dir);
         };
         if (body.gradient.single_precision())
           force_pass(body, body.gradient.grad_float, dir, stress);

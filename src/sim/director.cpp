@@ -23,10 +23,26 @@ double director_energy(const Body& body, const materials::LiquidCrystalElastomer
 }
 }  // namespace
 
+void frank_divergence(const Body& body, std::vector<Vec3>& divergence) {
+  const DirectorField& dir = *body.director;
+  const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
+  const auto n = static_cast<Index>(body.size());
+  std::vector<Mat3> flux(body.size());
+#pragma omp parallel for schedule(static)
+  for (Index L = 0; L < n; ++L) flux[L] = model.frank_flux(body.F[L], director_point(dir, L));
+  // The same weak form as the force pass: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I).
+  rk::internal_forces(body.gradient, flux, divergence);
+#pragma omp parallel for schedule(static)
+  for (Index I = 0; I < n; ++I) divergence[I] /= -body.cloud.volume[I];
+}
+
 double director_residual(const Body& body) {
   if (!body.director) return 0.0;
   const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
   const DirectorField& dir = *body.director;
+  std::vector<Vec3> made;  // the Frank divergence, when the force pass does not track it
+  if (dir.frank && !dir.frank_divergence_tracked) frank_divergence(body, made);
+  const std::vector<Vec3>& divergence = dir.frank_divergence_tracked ? dir.frank_divergence : made;
   double largest = 0.0;
 #pragma omp parallel for schedule(static) reduction(max : largest)
   for (Index I = body.owned_begin(); I < body.owned_end(); ++I) {
@@ -34,17 +50,21 @@ double director_residual(const Body& body) {
     if (dir.anchored && body.cloud.boundary_index[I] >= 0) continue;
     // From the state (F, h, Grad h and the Frank divergence of the last force
     // evaluation), so a held director is measured too.
-    const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
+    const Vec3 frank = dir.frank ? divergence[I] : Vec3::Zero();
     largest = std::max(largest, model.transverse_molecular_field(body.F[I], director_point(dir, I), frank).norm());
   }
   return largest / model.mu;
 }
 
+bool director_relaxes(const Body& body) {
+  if (!body.director || !body.director->evolve) return false;
+  return std::get<materials::lce::BodyMaterial>(body.material).model.mobility > 0.0;
+}
+
 double director_stable_dt(const Body& body) {
   double dt = std::numeric_limits<double>::infinity();
-  if (!body.director || !body.director->evolve) return dt;
+  if (!director_relaxes(body)) return dt;
   const auto& model = std::get<materials::lce::BodyMaterial>(body.material).model;
-  if (model.mobility <= 0.0) return dt;
   const DirectorField& dir = *body.director;
 #pragma omp parallel for schedule(static) reduction(min : dt)
   for (Index I = body.owned_begin(); I < body.owned_end(); ++I)
@@ -81,7 +101,7 @@ DirectorStep advance_director(Body& body, double dt) {
     for (Index I = begin; I < end; ++I) {
       const materials::DirectorPoint p = director_point(dir, I);
       const Mat3 l = dir.F_rate[I] * body.F[I].inverse();
-      const Vec3 frank = dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
+      const Vec3 frank = dir.frank_divergence_tracked && dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
       dir.rate[I] = model.director_rate(body.F[I], p, l, frank);
       const Vec3 h = dir.h[I] + dt * dir.rate[I];
       dir.h[I] = h / h.norm();  // Eq. 7 has a component along h: keep |h| = 1

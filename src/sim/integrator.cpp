@@ -118,7 +118,14 @@ void Integrator::initialize() {
   centre_ = 0.5 * (lo + hi);
   if (settings_.domain_size <= 0.0) settings_.domain_size = 50.0 * (hi - lo).norm();
 
-  for (auto& bp : world_.bodies) bp->inertia = bp->mass;
+  for (auto& bp : world_.bodies) {
+    bp->inertia = bp->mass;
+    // The Frank divergence costs a scatter per row: made only for a reader in the step
+    // (a distributed body keeps it, for director_residual's sake).
+    if (bp->director)
+      bp->director->frank_divergence_tracked =
+          director_relaxes(*bp) || settings_.relax_director_tol > 0.0 || bp->distributed();
+  }
   evaluate_forces();
   unscaled_stable_dt_ = estimate_stable_dt();
   if (settings_.mode == Mode::Relax && settings_.mass_scaling) {

@@ -180,3 +180,32 @@ TEST(ForcePass, SinglePrecisionStorageGivesTheDoubleForcesToItsRoundOff) {
   EXPECT_LT(divergence_error, 1e-6);
   EXPECT_EQ(f.stabilization_energy, d.stabilization_energy);
 }
+
+// Without a reader of the Frank divergence in the step (L = 0, no director criterion)
+// the pass leaves it out (DirectorField::frank_divergence_tracked): the force keeps its
+// bits, and director_residual makes the divergence itself, to round-off the tracked one.
+TEST(ForcePass, UntrackedFrankDivergenceKeepsTheForceAndTheDirectorResidual) {
+  ScopedThreads two(2);
+  auto sw = build_from_text(with(with(kScene, "cloud", "generator = \"sphere\"\nradius = 2e-6\ncells = 5"), "material", kLce));
+  Body& b = *sw.world->bodies.front();
+  ASSERT_TRUE(b.director && b.director->frank);
+  ASSERT_FALSE(director_relaxes(b));  // kLce declares no mobility
+  deform(b);
+  b.director->frank_divergence_tracked = true;
+  compute_internal_forces(b);
+  const std::vector<Vec3> tracked_force = b.force;
+  const std::vector<Vec3> tracked_divergence = b.director->frank_divergence;
+  const double tracked_residual = director_residual(b);
+  ASSERT_GT(max_norm(tracked_divergence), 0.0);
+
+  b.director->frank_divergence_tracked = false;
+  std::fill(b.director->frank_divergence.begin(), b.director->frank_divergence.end(), Vec3::Zero());
+  compute_internal_forces(b);
+  EXPECT_EQ(max_difference(b.force, tracked_force), 0.0);
+  EXPECT_EQ(max_norm(b.director->frank_divergence), 0.0);  // not assembled
+  std::vector<Vec3> made;
+  frank_divergence(b, made);
+  EXPECT_LT(max_difference(made, tracked_divergence), 1e-12 * max_norm(tracked_divergence));
+  EXPECT_NEAR(director_residual(b), tracked_residual, 1e-12 * tracked_residual);
+  ASSERT_GT(tracked_residual, 0.0);
+}

@@ -86,6 +86,7 @@ class RowScatter {
   static int team_threads();
 
   bool planned_for(int threads) const { return threads_ == threads; }
+  bool planned_for(int threads, int channels) const { return threads_ == threads && channels_ == channels; }
   int threads() const { return threads_; }
   Index row_begin(int t) const { return row_begin_[static_cast<std::size_t>(t)]; }
   Index row_end(int t) const { return row_begin_[static_cast<std::size_t>(t) + 1]; }

@@ -175,6 +175,15 @@ DirectorStep advance_director(Body& body, double dt);
 // too; 0 for a body without a director.
 double director_residual(const Body& body);
 
+// Div_X of the Frank flux at every particle, from the state of the last force pass
+// (F, h and Grad_X h), for a body whose pass does not track it (DirectorField::
+// frank_divergence_tracked); one process only (a distributed body always tracks it).
+void frank_divergence(const Body& body, std::vector<Vec3>& divergence);
+
+// Whether the body's director relaxes by Eq. 5 (an LCE with L > 0 that evolves): the
+// only reader of the Frank divergence in a step.
+bool director_relaxes(const Body& body);
+
 // The largest step at which the explicit director update (Eq. 5-7) is stable at the
 // current state: min over this rank's particles of 2 / (L director_stiffness); infinity
 // when the director does not evolve. A mobility high enough to bind here would otherwise

@@ -20,6 +20,11 @@ struct DirectorField {
   bool evolve = true;                  // integrate Eq. 5-7
   bool anchored = true;                // Eq. 8: h = current outward normal on the surface
   bool frank = false;                  // kappa > 0: the gradient terms are built
+  // The force pass assembles frank_flux and frank_divergence (a second scatter per row)
+  // only while something reads them every step: the director's relaxation (Eq. 5, L > 0)
+  // or a director criterion of the relaxation. Otherwise director_residual makes them
+  // when asked. Grad_X h is always gathered: the Frank stress needs it.
+  bool frank_divergence_tracked = true;
 };
 
 }  // namespace rkpm::sim
