@@ -80,8 +80,11 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
     scatter.clear(t);
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      const Mat3 F = rk::deformation_gradient(op, grad, body.cloud.X, body.d, L);
-      const Mat3 grad_h = frank ? rk::row_gradient(op, grad, dir->h, L) : Mat3::Zero();
+      Mat3 F, grad_h = Mat3::Zero();
+      if (frank)
+        rk::deformation_and_director_gradients(op, grad, body.cloud.X, body.d, dir->h, L, F, grad_h);
+      else
+        F = rk::deformation_gradient(op, grad, body.cloud.X, body.d, L);
       if (frank) dir->grad_h[L] = grad_h;
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();

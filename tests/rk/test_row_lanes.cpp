@@ -70,6 +70,34 @@ TEST(RowLanes, GatherHasTheBitsOfTheOneEntryLoop) {
   }
 }
 
+// Two fields gathered in one sweep (the force pass's displacements and directors): each
+// set of sums has the bits of its field gathered alone, in both forms.
+TEST(RowLanes, GatherOfTwoFieldsHasTheBitsOfEachAlone) {
+  for (Index n = 0; n <= 13; ++n) {
+    const Row row = random_row(n, 29 + n), other = random_row(n, 41 + n);
+    const auto a = [&](Index I) { return row.value[I]; };
+    const auto b = [&](Index I) { return Vec3(other.value[I].reverse()); };
+    const Vec3 aL = a(row.own), bL = b(row.own);
+    for (const bool vector : {true, false}) {
+      Mat3 ga, gb;
+      if (vector)
+        rk::lanes::row_gradients<true>(row.col.data(), row.planar.data(), n, a, aL, ga, b, bL, &gb);
+      else
+        rk::lanes::row_gradients<false>(row.col.data(), row.planar.data(), n, a, aL, ga, b, bL, &gb);
+      const Mat3 alone_a = rk::lanes::row_gradient<false>(row.col.data(), row.planar.data(), n, a, aL);
+      const Mat3 alone_b = rk::lanes::row_gradient<false>(row.col.data(), row.planar.data(), n, b, bL);
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          EXPECT_EQ(ga(i, j), alone_a(i, j)) << (vector ? "vector" : "scalar") << " form, n = " << n;
+          EXPECT_EQ(gb(i, j), alone_b(i, j)) << (vector ? "vector" : "scalar") << " form, n = " << n;
+        }
+      if (n > 0) {
+        EXPECT_NE(ga, gb);  // two different fields were gathered
+      }
+    }
+  }
+}
+
 // (w M) b as the scatter associates it.
 Vec3 product(const Mat3& wM, const Vec3& b) {
   double m[3][3], out[3];

@@ -282,6 +282,28 @@ Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>&
   }
 }
 
+// F_L and Grad_X h_L of one row together (the force pass with the Frank term). In single
+// precision one sweep over the row gathers both (lanes::row_gradients): the row and its
+// columns are read once, and the bits are those of the two gathers apart.
+template <class Stored>
+void deformation_and_director_gradients(const GradientOperator& op, const std::vector<Stored>& grad,
+                                        const std::vector<Vec3>& X, const std::vector<Vec3>& d,
+                                        const std::vector<Vec3>& h, Index L, Mat3& F, Mat3& grad_h) {
+  if constexpr (std::is_same_v<Stored, float>) {
+    const Vec3* dp = d.data();
+    const Vec3* hp = h.data();
+    const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+    Mat3 grad_u;
+    lanes::row_gradients(
+        op.col.data() + k0, op.planar_row(L), k1 - k0, [dp](Index I) { return dp[I]; }, dp[L], grad_u,
+        [hp](Index I) { return hp[I]; }, hp[L], &grad_h);
+    F = Mat3::Identity() + grad_u;
+  } else {
+    F = deformation_gradient(op, grad, X, d, L);
+    grad_h = row_gradient(op, grad, h, L);
+  }
+}
+
 // sum_I v_I (x) b_I(X_L) over row L: Grad_X h from directors, dF/dt from velocities,
 // F_L from positions. The one gather every per-point gradient uses (in the relative
 // form for single-precision storage, see GradientOperator).

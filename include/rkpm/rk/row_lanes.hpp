@@ -32,6 +32,7 @@
 #include "rkpm/common/types.hpp"
 
 #include <cstring>
+#include <type_traits>
 
 namespace rkpm::rk::lanes {
 
@@ -72,37 +73,75 @@ void product(const T m[3][3], const T& b0, const T& b1, const T& b2, T out[3]) {
   out[2] = m[2][0] * b0 + (m[2][1] * b1 + m[2][2] * b2);
 }
 
+// The absent second field of row_gradients (a gather of one field).
+struct NoField {
+  Vec3 operator()(Index) const { return Vec3::Zero(); }
+};
+
 // g = sum_k (v_k - v_L) (x) b~_k over a row of n entries whose components sit at
-// b[0..n), b[n..2n), b[2n..3n) and whose particles are col[0..n); value(I) gives v_I.
+// b[0..n), b[n..2n), b[2n..3n) and whose particles are col[0..n); value(I) gives v_I;
+// for one field, or for two at once (ga from a, gb from b: the force pass gathers the
+// displacements and, with the Frank term, the directors over the same row, so the row
+// and its columns are loaded once and the two sets of sums run side by side).
 // One entry at a time, in the row's order; the vector form keeps v_k - v_L in the first
-// three lanes. Either way each of the nine sums is the sequential sum, to the bit.
-template <bool Vector = kVectorRows, class Value>
-Mat3 row_gradient(const Index* col, const float* b, Index n, const Value& value, const Vec3& vL) {
+// three lanes. Either way each of the nine sums of a field is the sequential sum, to the
+// bit, whether gathered alone or with another field.
+template <bool Vector = kVectorRows, class ValueA, class ValueB = NoField>
+void row_gradients(const Index* col, const float* b, Index n, const ValueA& value_a, const Vec3& aL, Mat3& ga,
+                   const ValueB& value_b = NoField{}, const Vec3& bL = Vec3::Zero(), Mat3* gb = nullptr) {
+  constexpr bool two = !std::is_same_v<ValueB, NoField>;
   const float* bx = b;
   const float* by = b + n;
   const float* bz = b + 2 * n;
-  Mat3 g;
   if constexpr (Vector) {
-    const Doubles VL{vL(0), vL(1), vL(2), 0.0};
-    Doubles g0{0.0, 0.0, 0.0, 0.0}, g1 = g0, g2 = g0;  // columns of g
+    const Doubles AL{aL(0), aL(1), aL(2), 0.0}, BL{bL(0), bL(1), bL(2), 0.0};
+    const Doubles zero{0.0, 0.0, 0.0, 0.0};
+    Doubles a0 = zero, a1 = zero, a2 = zero, b0 = zero, b1 = zero, b2 = zero;  // columns of ga, gb
     for (Index m = 0; m < n; ++m) {
-      const Vec3 vk = value(col[m]);
-      const Doubles v = Doubles{vk(0), vk(1), vk(2), 0.0} - VL;
-      g0 += v * broadcast(static_cast<double>(bx[m]));
-      g1 += v * broadcast(static_cast<double>(by[m]));
-      g2 += v * broadcast(static_cast<double>(bz[m]));
+      const Index I = col[m];
+      const Doubles ex = broadcast(static_cast<double>(bx[m])), ey = broadcast(static_cast<double>(by[m])),
+                    ez = broadcast(static_cast<double>(bz[m]));
+      const Vec3 ak = value_a(I);
+      const Doubles va = Doubles{ak(0), ak(1), ak(2), 0.0} - AL;
+      a0 += va * ex;
+      a1 += va * ey;
+      a2 += va * ez;
+      if constexpr (two) {
+        const Vec3 bk = value_b(I);
+        const Doubles vb = Doubles{bk(0), bk(1), bk(2), 0.0} - BL;
+        b0 += vb * ex;
+        b1 += vb * ey;
+        b2 += vb * ez;
+      }
     }
-    g << g0[0], g1[0], g2[0], g0[1], g1[1], g2[1], g0[2], g1[2], g2[2];
+    ga << a0[0], a1[0], a2[0], a0[1], a1[1], a2[1], a0[2], a1[2], a2[2];
+    if constexpr (two) *gb << b0[0], b1[0], b2[0], b0[1], b1[1], b2[1], b0[2], b1[2], b2[2];
   } else {
-    Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
+    Vec3 a0 = Vec3::Zero(), a1 = a0, a2 = a0, b0 = a0, b1 = a0, b2 = a0;
     for (Index m = 0; m < n; ++m) {
-      const Vec3 v = value(col[m]) - vL;
-      g0 += v * static_cast<double>(bx[m]);
-      g1 += v * static_cast<double>(by[m]);
-      g2 += v * static_cast<double>(bz[m]);
+      const Index I = col[m];
+      const double ex = bx[m], ey = by[m], ez = bz[m];
+      const Vec3 va = value_a(I) - aL;
+      a0 += va * ex;
+      a1 += va * ey;
+      a2 += va * ez;
+      if constexpr (two) {
+        const Vec3 vb = value_b(I) - bL;
+        b0 += vb * ex;
+        b1 += vb * ey;
+        b2 += vb * ez;
+      }
     }
-    g << g0, g1, g2;
+    ga << a0, a1, a2;
+    if constexpr (two) *gb << b0, b1, b2;
   }
+}
+
+// The gather of one field (row_gradients).
+template <bool Vector = kVectorRows, class Value>
+Mat3 row_gradient(const Index* col, const float* b, Index n, const Value& value, const Vec3& vL) {
+  Mat3 g;
+  row_gradients<Vector>(col, b, n, value, vL, g);
   return g;
 }
 
