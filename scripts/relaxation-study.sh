@@ -13,7 +13,8 @@
 #   (default "fire nested example"; also "measured", "mass_scaling", "contact" and
 #   "fire2"). Every variant is plain FIRE plus its own keys: the scenes' relaxation keys
 #   (nested_levels, contact_mass_scaling) are taken out first, and "example" puts back
-#   the RBC example's own (nested levels and contact mass scaling). A run whose
+#   the RBC example's own (nested levels and contact mass scaling); "example3" the same
+#   with a third, coarser level (0.1875 of face_cells), for clouds past 1e5 particles. A run whose
 #   directory holds a summary.json is kept, so the study can be completed in several
 #   sittings.
 set -euo pipefail
@@ -39,8 +40,9 @@ variant_keys() {
     mass_scaling) echo 'mass_scaling = true' ;;
     contact) echo 'contact_mass_scaling = true' ;;
     example) printf '%s\n' 'nested_levels = [0.375, 0.625]' 'contact_mass_scaling = true' ;;
+    example3) printf '%s\n' 'nested_levels = [0.1875, 0.375, 0.625]' 'contact_mass_scaling = true' ;;
     fire2) echo 'relax_method = "fire2"' ;;
-    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling, contact, example, fire2)" >&2; exit 2 ;;
+    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling, contact, example, example3, fire2)" >&2; exit 2 ;;
   esac
 }
 
@@ -69,7 +71,7 @@ for variant in "${variants[@]}"; do
   done
   # The contact scene's imported substrate cannot be coarsened: no nested levels there.
   # Imported clouds have no coarser levels.
-  case $variant in nested|example) ;; *) run_case "spread_cell_$variant" "$here/examples/spread_cell/spread_cell.toml" "$variant" ;; esac
+  case $variant in nested|example|example3) ;; *) run_case "spread_cell_$variant" "$here/examples/spread_cell/spread_cell.toml" "$variant" ;; esac
 done
 
 python3 - "$out" "${variants[@]}" <<'PY'

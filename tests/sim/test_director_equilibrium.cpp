@@ -146,5 +146,43 @@ TEST(DirectorStop, WithAToleranceTheRelaxationWaitsForTheDirector) {
   EXPECT_GT(with_director.steps, forces_only.steps);
 }
 
+// The Frank divergence is assembled in the force pass only for a reader in the step
+// (DirectorField::frank_divergence_tracked): a relaxing director (L > 0) or a director
+// criterion. A held director (L = 0) leaves it to director_residual, which then gives the
+// residual of the tracked pass at the same state.
+TEST(DirectorStop, TheFrankDivergenceIsTrackedOnlyWhereTheStepReadsIt) {
+  testing::ScopedThreads one(1);
+  const auto tracked_after_initialize = [](const std::string& text) {
+    auto sw = testing::build_from_text(text);
+    Body& body = *sw.world->bodies.front();
+    Integrator integrator(*sw.world, sw.settings);
+    integrator.initialize();
+    return body.director->frank_divergence_tracked;
+  };
+  const std::string held = block("0", "1e-11", 3), relaxing = block("1e3", "1e-11", 3);
+  EXPECT_FALSE(tracked_after_initialize(held));
+  EXPECT_TRUE(tracked_after_initialize(relaxing));
+  std::string with_criterion = held;
+  with_criterion.insert(with_criterion.find("[integrator]\n") + 13, "relax_director_tol = 1e-4\n");
+  EXPECT_TRUE(tracked_after_initialize(with_criterion));
+
+  // The held director's residual, untracked, against the same state with the pass tracking.
+  auto sw = testing::build_from_text(held);
+  Body& body = *sw.world->bodies.front();
+  for (std::size_t i = 0; i < body.director->h.size(); ++i) {
+    const double theta = 0.3 * std::sin(static_cast<double>(i));
+    body.director->h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
+  }
+  Integrator integrator(*sw.world, sw.settings);
+  integrator.initialize();
+  ASSERT_FALSE(body.director->frank_divergence_tracked);
+  const double untracked = integrator.director_residual();
+  body.director->frank_divergence_tracked = true;
+  compute_internal_forces(body);
+  const double tracked = director_residual(body);
+  ASSERT_GT(tracked, 0.0);
+  EXPECT_NEAR(untracked, tracked, 1e-12 * tracked);
+}
+
 }  // namespace
 }  // namespace rkpm::sim
