@@ -81,11 +81,12 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
       Mat3 F, grad_h = Mat3::Zero();
-      if (frank)
+      if (frank) {
         rk::deformation_and_director_gradients(op, grad, body.cloud.X, body.d, dir->h, L, F, grad_h);
-      else
+        dir->grad_h[L] = grad_h;
+      } else {
         F = rk::deformation_gradient(op, grad, body.cloud.X, body.d, L);
-      if (frank) dir->grad_h[L] = grad_h;
+      }
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
       const Mat3 P = stress(L, F, grad_h, divergence ? &flux : nullptr);
@@ -131,11 +132,11 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
 // and calls the model's inline kernel per point (sim::Material's interface).
 void compute_internal_forces(Body& body) {
   DirectorField* dir = director_of(body);
-  const bool frank = dir != nullptr && dir->frank;
   std::visit(
       [&](const auto& material) {
+        // flux: null unless the pass tracks the Frank divergence.
         const auto stress = [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3* flux) {
-          return material.first_piola(L, F, grad_h, frank ? flux : nullptr, dir);
+          return material.first_piola(L, F, grad_h, flux, dir);
         };
         if (body.gradient.single_precision())
           force_pass(body, body.gradient.grad_float, dir, stress);
