@@ -43,7 +43,7 @@ Footprint footprint(const sim::Body& b) {
   if (b.director) {
     const auto& d = *b.director;
     f.state += bytes(d.h) + bytes(d.h0) + bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence) +
-               bytes(d.rate) + bytes(d.F_rate) + bytes(d.normals);
+               bytes(d.rate) + bytes(d.F_start) + bytes(d.normals);
   }
   const auto& c = b.cloud;
   f.cloud = bytes(c.X) + bytes(c.volume) + bytes(c.mesh.type) + bytes(c.mesh.offset) + bytes(c.mesh.nodes) +

@@ -121,7 +121,7 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
   dir.evolve = p.flag("evolve");
   dir.anchored = p.choice("boundary") == "normal";
   dir.rate.assign(n, Vec3::Zero());
-  dir.F_rate.assign(n, Mat3::Identity());
+  dir.F_start.assign(n, Mat3::Identity());
   // The material decides whether the Frank term's arrays are needed (materials/lce).
   return dir;
 }

@@ -72,6 +72,12 @@ double director_stable_dt(const Body& body) {
   return dt;
 }
 
+void hold_step_start(Body& body) {
+  DirectorField& dir = *body.director;
+#pragma omp parallel for schedule(static)
+  for (Index L = body.owned_begin(); L < body.owned_end(); ++L) dir.F_start[L] = body.F[L];
+}
+
 DirectorStep advance_director(Body& body, double dt) {
   // Only the LCE carries a director (its BodyMaterial::needs_director).
   const auto& material = std::get<materials::lce::BodyMaterial>(body.material);
@@ -79,28 +85,31 @@ DirectorStep advance_director(Body& body, double dt) {
   DirectorField& dir = *body.director;
   const Index begin = body.owned_begin(), end = body.owned_end();
 
-  // dF/dt = sum_I v_I (x) b_I: the smoothed velocity gradient in the reference frame
-  // (distributed: at the owned points, from the ghosts' current velocities).
-  if (body.distributed()) body.ghosts.pull(body.v);
-  rk::deformation_gradients(body.gradient, body.v, dir.F_rate);
-
+  // The step's motion: F is linear in the displacements, so F - F_start = sum_I (d_I -
+  // d_I,start) (x) b_I, the deformation the body made over the step (drift, the supports'
+  // advance, a FIRE 2.0 step back), and (F - F_start) / dt its rate (the smoothed
+  // velocity gradient in the reference frame). No gather over the rows: their sweep over
+  // the velocities cost as much as the force pass's gather of F.
   DirectorStep result;
   const double energy_before = director_energy(body, model);
-  double& active = result.active_power;
+  double& active = result.active_work;
   if (model.zeta != 0.0) {
 #pragma omp parallel for schedule(static) reduction(+ : active)
-    for (Index L = begin; L < end; ++L)
-      // The active stress is part of the internal force -sum_L V_L P_L b_I, so it puts
-      // energy in at the rate -sum_L V_L P_a : dF/dt.
-      active -= body.gradient.weight[L] * material.activity_at(L) *
-                (model.first_piola_active(body.F[L], dir.h[L]).cwiseProduct(dir.F_rate[L])).sum();
+    for (Index L = begin; L < end; ++L) {
+      // The active stress is part of the internal force -sum_L V_L P_a b_I, so over the
+      // step it puts in -sum_L V_L int P_a : dF, here by the trapezoidal rule in F at the
+      // step's director (the one the step's forces saw).
+      const Mat3 P_a = model.first_piola_active(dir.F_start[L], dir.h[L]) + model.first_piola_active(body.F[L], dir.h[L]);
+      active -= 0.5 * body.gradient.weight[L] * material.activity_at(L) *
+                (P_a.cwiseProduct(body.F[L] - dir.F_start[L])).sum();
+    }
   }
 
   if (dir.evolve) {
 #pragma omp parallel for schedule(static)
     for (Index I = begin; I < end; ++I) {
       const materials::DirectorPoint p = director_point(dir, I);
-      const Mat3 l = dir.F_rate[I] * body.F[I].inverse();
+      const Mat3 l = ((body.F[I] - dir.F_start[I]) / dt) * body.F[I].inverse();
       const Vec3 frank = dir.frank_divergence_tracked && dir.frank ? dir.frank_divergence[I] : Vec3::Zero();
       dir.rate[I] = model.director_rate(body.F[I], p, l, frank);
       const Vec3 h = dir.h[I] + dt * dir.rate[I];

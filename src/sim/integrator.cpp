@@ -148,7 +148,6 @@ void Integrator::initialize() {
   ledger_ = EnergyLedger{};
   ledger_.kinetic = kinetic_energy(world_);
   ledger_.initial = ledger_.kinetic + stored_energy();
-  active_power_ = 0.0;
   check_state();
   // The relaxation's scales, fixed for the run: each body's mean shear modulus, and
   // sum over bodies of mu V.
@@ -207,11 +206,13 @@ void Integrator::step() {
   book.h = dt();
   if (book.h < dt_) ++motion_limited_steps_;
   book.old_term_power = term_power_;
-  book.old_active_power = active_power_;
   book.damping_power = 0.0;
   book.fire_dissipated = 0.0;
   book.director_energy.clear();
+  book.active_work = 0.0;
 
+  for (auto& bp : world_.bodies)
+    if (bp->director) hold_step_start(*bp);
   first_kick_and_drift(book);
   evaluate_forces();
   second_kick(book.h);
@@ -304,28 +305,27 @@ void Integrator::step_back(StepBook& book) {
   ++step_backs_;
 }
 
-// The director of each LCE body moves at fixed positions (Eq. 5-8): the active power
-// at the step's end and the stored energy the update changes, booked apart.
+// The director of each LCE body moves at fixed positions (Eq. 5-8): the active work
+// of the step's motion and the stored energy the update changes, booked apart.
 void Integrator::director(StepBook& book) {
-  active_power_ = 0.0;
   for (auto& bp : world_.bodies)
     if (bp->director) {
       const DirectorStep d = advance_director(*bp, book.h);
-      active_power_ += world_.comm->sum(d.active_power);
+      book.active_work += world_.comm->sum(d.active_work);
       book.director_energy.push_back(world_.comm->sum(d.energy_change));
     }
 }
 
-// The energy ledger: the work of the terms and of the moving supports and the active
-// work by the trapezoidal rule over the step, the director's energy change, and the
-// dissipation by FIRE and by damping.
+// The energy ledger: the work of the terms and of the moving supports by the trapezoidal
+// rule over the step, the active work (trapezoidal in F, advance_director), the
+// director's energy change, and the dissipation by FIRE and by damping.
 void Integrator::ledger(const StepBook& book) {
   const double h = book.h;
   term_power_ = power_of_terms();
   if (settings_.mode == Mode::Relax) ledger_.dissipated += book.fire_dissipated;
   for (double e : book.director_energy) ledger_.director += e;
   ledger_.external += 0.5 * h * (book.old_term_power + term_power_) + h * support_power_;
-  ledger_.active += 0.5 * h * (book.old_active_power + active_power_);
+  ledger_.active += book.active_work;
   ledger_.dissipated += h * book.damping_power;
 }
 
@@ -477,7 +477,6 @@ StateRecord Integrator::save_state() const {
   s.put_real("ledger.initial", ledger_.initial);
   s.put_real("ledger.director", ledger_.director);
   s.put_real("term_power", term_power_);
-  s.put_real("active_power", active_power_);
   s.put_real("support_power", support_power_);
   s.put_real("fire.alpha", fire_.alpha());
   s.put_integer("fire.positive_steps", fire_.positive_steps());
@@ -502,7 +501,6 @@ void Integrator::load_state(const StateRecord& s) {
   ledger_.initial = s.real("ledger.initial");
   ledger_.director = s.real("ledger.director");
   term_power_ = s.real("term_power");
-  active_power_ = s.real("active_power");
   support_power_ = s.real("support_power");
   fire_ = Fire(settings_.fire, s.real("fire.alpha"), s.integer("fire.positive_steps"));
   settings_.domain_size = s.real("domain_size");

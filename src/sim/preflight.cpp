@@ -25,7 +25,7 @@ constexpr double kPi = 3.14159265358979323846;
 // F per point (72; the stress, positions and accelerations are not stored), mass,
 // inertia, volume, spacing, stabilization weight, a surface term's quadrature, the
 // set-up's kd-tree and support radii (freed before the run, but part of the peak), the
-// director arrays of an LCE body (h, h0, rate, F_rate, grad_h, flux, divergence) and the
+// director arrays of an LCE body (h, h0, rate, F_start, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up from the peaks measured at 1e6 particles
 // beyond the operators when the state held more (block 678, sphere 933, RBC shell
 // 1,235 bytes per particle, docs/performance.md); kept as a margin.

@@ -268,12 +268,15 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
 }
 
 // Plain FIRE from the reference state comes to rest in a neighbouring state, not the
-// same one: the two rest states are 5.2e-2 of the largest displacement apart (rigid
+// same one: the two rest states are 5.5e-2 of the largest displacement apart (rigid
 // motion removed), and each stays where it is under ten times tighter criteria. Both
-// are biconcave by the scene's criteria with the same shape to 1.6e-3 in h_min/h_max
-// (0.4373 and 0.4389) and 2.0e-3 of D in RMS against Evans-Fung (4.41 and 4.21 %). The bound here would catch a route that lands on another branch:
-// with a coarse level at face_cells 6 the route ends at h_min/h_max 0.385 against
-// 0.439, 9.4e-2 apart (docs/relaxation.md, "Which rest state a route reaches").
+// are biconcave by the scene's criteria with the same shape to 3.1e-3 in h_min/h_max
+// (0.4366 and 0.4397) and 1.9e-3 of D in RMS against Evans-Fung (4.41 and 4.22 %); how
+// close within the family depends on the path (1.6e-3 before the director took the
+// step's motion from F, docs/relaxation.md). The bounds would catch a route that lands
+// on another branch: with a coarse level at face_cells 6 the route ends at h_min/h_max
+// 0.385 against 0.439, 9.4e-2 apart (docs/relaxation.md, "Which rest state a route
+// reaches").
 TEST(RedBloodCell, PlainFireFromTheStartRestsInTheSameShape) {
   const Relaxed route = default_disc();
   const Relaxed plain = relax(coarse_scene(kDriver, 0.9, 0.5e-6, 0.1));
@@ -287,7 +290,7 @@ TEST(RedBloodCell, PlainFireFromTheStartRestsInTheSameShape) {
               route.final.rms_vs_evans_fung, plain.final.rms_vs_evans_fung);
   expect_evans_fung_disc(plain);
   EXPECT_LT(apart, 0.08);
-  EXPECT_NEAR(route.final.h_min / route.final.h_max, plain.final.h_min / plain.final.h_max, 3e-3);
+  EXPECT_NEAR(route.final.h_min / route.final.h_max, plain.final.h_min / plain.final.h_max, 5e-3);
   EXPECT_NEAR(route.final.rms_vs_evans_fung, plain.final.rms_vs_evans_fung, 4e-3);
   EXPECT_NEAR(route.final.diameter, plain.final.diameter, 1e-3 * plain.final.diameter);
 }

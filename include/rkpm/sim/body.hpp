@@ -155,13 +155,17 @@ inline Vec3 physical_point(const Body& body, Index J) {
 // boundary faces at the generalized positions x), indexed like cloud.boundary_particles.
 void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
 
+// The deformation gradient at the start of a step (DirectorField::F_start), from which
+// the director update takes the step's motion. Called before the step moves the body.
+void hold_step_start(Body& body);
+
 // Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
-// of Eq. 7 with the current velocity gradient, renormalisation to unit length, and
+// of Eq. 7 with the step's velocity gradient (F - F_start) / dt F^-1, renormalisation to unit length, and
 // h = current outward normal on the surface when anchored). LCE bodies only.
 // Distributed: at this rank's particles, and the DirectorStep is this rank's share
 // (the ghost layer holds the nodes of the boundary faces the normals need).
 struct DirectorStep {
-  double active_power = 0.0;   // work rate of the active stress (Eq. 1), -sum_L V_L P_a : dF/dt [W]
+  double active_work = 0.0;    // work of the active stress (Eq. 1) over the step, -sum_L V_L int P_a : dF [J]
   double energy_change = 0.0;  // change of the stored energy by the director update at fixed F [J]:
                                // relaxation dissipates it, the anchoring (Eq. 8) may add to it
 };

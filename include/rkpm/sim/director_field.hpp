@@ -15,7 +15,7 @@ struct DirectorField {
   std::vector<Mat3> frank_flux;        // dW/d(Grad_X h) per point (Frank term only)
   std::vector<Vec3> frank_divergence;  // Div_X of the flux at particles (Frank term only)
   std::vector<Vec3> rate;              // dh/dt
-  std::vector<Mat3> F_rate;            // dF/dt per point (velocity gradient l = dF/dt F^-1)
+  std::vector<Mat3> F_start;           // F per point at the start of the step (hold_step_start)
   std::vector<Vec3> normals;           // scratch: current outward normals of the surface
   bool evolve = true;                  // integrate Eq. 5-7
   bool anchored = true;                // Eq. 8: h = current outward normal on the surface

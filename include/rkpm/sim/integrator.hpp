@@ -120,7 +120,8 @@ class Integrator {
   // What the stages of one step hand to the ledger.
   struct StepBook {
     double h = 0.0;                             // the step taken [s]
-    double old_term_power = 0.0, old_active_power = 0.0;  // at the start of the step [W]
+    double old_term_power = 0.0;                // at the start of the step [W]
+    double active_work = 0.0;                   // of the active stress over the step (advance_director) [J]
     double damping_power = 0.0;                 // c sum_I m_I |v_I|^2 at the half step [W]
     double fire_dissipated = 0.0;               // kinetic energy removed by FIRE [J]
     double kinetic_of_motion = 0.0;             // kinetic energy after the second kick, before FIRE [J]
@@ -155,7 +156,7 @@ class Integrator {
   double dt_ = 0.0, stable_dt_ = 0.0;
   bool dt_clamped_ = false;
   EnergyLedger ledger_;
-  double term_power_ = 0.0, active_power_ = 0.0, support_power_ = 0.0;
+  double term_power_ = 0.0, support_power_ = 0.0;
   double residual_ = 0.0, kinetic_measure_ = 0.0, director_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
   std::vector<double> body_shear_modulus_;  // mean_shear_modulus of each body (the residual's scale)
