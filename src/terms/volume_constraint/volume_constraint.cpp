@@ -50,7 +50,7 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
         fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
-  by_particle_.build(row_offset_, col_, static_cast<Index>(body.size()));
+  if (!body.distributed()) gather_by_particle();
   if (body.distributed()) {
     check_ghosts();
     std::tie(first_row_, end_row_) = owned_entries(body, owner_);
@@ -91,6 +91,17 @@ void VolumeConstraint::fold_facets(const rk::BoundaryQuadrature& q, Fold& fold) 
     C_.push_back(C);
     row_offset_.push_back(static_cast<Index>(col_.size()));
   }
+}
+
+// One process gathers each particle's push over its rows (add_forces). B is copied in
+// that order, so the gather streams it instead of reading it entry by entry across the
+// rows (which cost 10 % of a step of the 122,890-particle RBC shell); the copy's entry
+// index is then no longer needed. The sums keep their order and bits.
+void VolumeConstraint::gather_by_particle() {
+  by_particle_.build(row_offset_, col_, static_cast<Index>(body_.size()));
+  B_by_particle_.resize(by_particle_.entry.size());
+  for (std::size_t t = 0; t < by_particle_.entry.size(); ++t) B_by_particle_[t] = B_[by_particle_.entry[t]];
+  std::vector<Index>().swap(by_particle_.entry);
 }
 
 // The rows a rank measures read d at their columns: each must be the rank's own particle
@@ -153,7 +164,7 @@ void VolumeConstraint::add_forces(World&) {
   for (Index I = 0; I < n; ++I) {
     if (T.offset[I] == T.offset[I + 1]) continue;
     Vec3 push = Vec3::Zero();
-    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push += Vec3(cofactor_[T.row[t]] * B_[T.entry[t]]);
+    for (Index t = T.offset[I]; t < T.offset[I + 1]; ++t) push += Vec3(cofactor_[T.row[t]] * B_by_particle_[t]);
     body_.force[I] += scale * push;
   }
 }

@@ -61,6 +61,7 @@ class VolumeConstraint final : public Term {
   };
   // Appends one row per cell of q's facets (a cell's facets are listed together).
   void fold_facets(const rk::BoundaryQuadrature& q, Fold& fold);
+  void gather_by_particle();
 
   Body& body_;
   const par::Comm& comm_;
@@ -76,7 +77,10 @@ class VolumeConstraint final : public Term {
   std::vector<Mat3> C_;
   std::vector<Mat3> cofactor_;       // J F^-T of each row's cell, at the last measure
   std::vector<double> cone_;         // each row's share of the volume (summed exactly)
-  rk::CsrTranspose by_particle_;     // particle I -> (entry, row) pairs of B
+  // One process: particle I -> the rows that push it (by_particle_.row) and their B,
+  // copied in that order (gather_by_particle; by_particle_.entry is not kept).
+  rk::CsrTranspose by_particle_;
+  std::vector<Vec3> B_by_particle_;
   double bulk_, target_;
   double sign_ = 1.0, initial_ = 0.0, volume_ = 0.0, pressure_ = 0.0;
 };
