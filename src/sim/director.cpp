@@ -78,6 +78,23 @@ void hold_step_start(Body& body) {
   for (Index L = body.owned_begin(); L < body.owned_end(); ++L) dir.F_start[L] = body.F[L];
 }
 
+double active_work_since(const Body& body, const std::vector<Mat3>& F_from) {
+  const auto& material = std::get<materials::lce::BodyMaterial>(body.material);
+  const auto& model = material.model;
+  if (model.zeta == 0.0) return 0.0;
+  const DirectorField& dir = *body.director;
+  double active = 0.0;
+#pragma omp parallel for schedule(static) reduction(+ : active)
+  for (Index L = body.owned_begin(); L < body.owned_end(); ++L) {
+    // The active stress is part of the internal force -sum_L V_L P_a b_I, so along a
+    // motion it puts in -sum_L V_L int P_a : dF, here by the trapezoidal rule in F at the
+    // current director (the one the motion's forces saw).
+    const Mat3 P_a_sum = model.first_piola_active(F_from[L], dir.h[L]) + model.first_piola_active(body.F[L], dir.h[L]);
+    active -= 0.5 * body.gradient.weight[L] * material.activity_at(L) * (P_a_sum.cwiseProduct(body.F[L] - F_from[L])).sum();
+  }
+  return active;
+}
+
 DirectorStep advance_director(Body& body, double dt) {
   // Only the LCE carries a director (its BodyMaterial::needs_director).
   const auto& material = std::get<materials::lce::BodyMaterial>(body.material);
@@ -92,18 +109,7 @@ DirectorStep advance_director(Body& body, double dt) {
   // the velocities cost as much as the force pass's gather of F.
   DirectorStep result;
   const double energy_before = director_energy(body, model);
-  double& active = result.active_work;
-  if (model.zeta != 0.0) {
-#pragma omp parallel for schedule(static) reduction(+ : active)
-    for (Index L = begin; L < end; ++L) {
-      // The active stress is part of the internal force -sum_L V_L P_a b_I, so over the
-      // step it puts in -sum_L V_L int P_a : dF, here by the trapezoidal rule in F at the
-      // step's director (the one the step's forces saw).
-      const Mat3 P_a = model.first_piola_active(dir.F_start[L], dir.h[L]) + model.first_piola_active(body.F[L], dir.h[L]);
-      active -= 0.5 * body.gradient.weight[L] * material.activity_at(L) *
-                (P_a.cwiseProduct(body.F[L] - dir.F_start[L])).sum();
-    }
-  }
+  result.active_work = active_work_since(body, dir.F_start);
 
   if (dir.evolve) {
 #pragma omp parallel for schedule(static)

@@ -278,13 +278,18 @@ void Integrator::fire(StepBook& book) {
 // evaluated at the new state. The ledger books the jump: the loads do the work W along
 // it (the trapezoidal rule of their power with the jump as the velocity over a unit
 // time), and what the stored energy does not gain of it is dissipated:
-// external += W, dissipated += W - (stored after - stored before).
+// external += W, dissipated += W + A - (stored after - stored before). A is the active
+// stress's work along the jump (Eq. 1; it stores nothing): the director update books it
+// with the step's motion (F - F_start includes the jump), so the jump's share is
+// dissipated here, or the balance would be off by A at every step back.
 void Integrator::step_back(StepBook& book) {
   const double stored_before = stored_energy();
   jump_.resize(world_.bodies.size());
+  jump_F_.resize(world_.bodies.size());
   for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
     Body& b = *world_.bodies[k];
     jump_[k] = b.d;  // the coordinates before the jump
+    if (b.director) jump_F_[k] = b.F;
 #pragma omp parallel for schedule(static)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * dt_ * b.v[i];
   }
@@ -300,8 +305,11 @@ void Integrator::step_back(StepBook& book) {
   const double power_after = power_of_terms();
   stop_bodies(world_);
   const double work = 0.5 * (power_before + power_after);
+  double active = 0.0;
+  for (std::size_t k = 0; k < world_.bodies.size(); ++k)
+    if (world_.bodies[k]->director) active += world_.comm->sum(active_work_since(*world_.bodies[k], jump_F_[k]));
   ledger_.external += work;
-  book.fire_dissipated += work - (stored_energy() - stored_before);
+  book.fire_dissipated += work + active - (stored_energy() - stored_before);
   ++step_backs_;
 }
 

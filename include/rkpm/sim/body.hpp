@@ -159,6 +159,11 @@ void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
 // the director update takes the step's motion. Called before the step moves the body.
 void hold_step_start(Body& body);
 
+// Work of the active stress (Eq. 1) at this rank's points along the motion from F_from
+// (per point) to the current F, at the current director: -sum_L V_L int P_a : dF by the
+// trapezoidal rule in F [J]. 0 without activity. LCE bodies only.
+double active_work_since(const Body& body, const std::vector<Mat3>& F_from);
+
 // Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
 // of Eq. 7 with the step's velocity gradient (F - F_start) / dt F^-1, renormalisation to unit length, and
 // h = current outward normal on the surface when anchored). LCE bodies only.

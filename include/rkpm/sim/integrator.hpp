@@ -170,6 +170,7 @@ class Integrator {
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
   std::vector<std::vector<Vec3>> jump_;  // step_back's scratch: each body's coordinates before the jump
+  std::vector<std::vector<Mat3>> jump_F_;  // and F of each body with a director (its active work)
   std::int64_t step_backs_ = 0;
   StepBook book_;
 };
