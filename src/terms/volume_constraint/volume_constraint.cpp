@@ -50,13 +50,14 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
         fold);
   cofactor_.resize(owner_.size());
   cone_.resize(owner_.size());
-  if (!body.distributed()) gather_by_particle();
   if (body.distributed()) {
     check_ghosts();
     std::tie(first_row_, end_row_) = owned_entries(body, owner_);
     plan_term_rows(push_, body, first_row_, end_row_, 1, [this](Index r, int, const std::function<void(Index)>& emit) {
       for (Index k = row_offset_[r]; k < row_offset_[r + 1]; ++k) emit(col_[k]);
     });
+  } else {
+    gather_by_particle();
   }
   const double v = measure_signed_volume();
   sign_ = v < 0.0 ? -1.0 : 1.0;
