@@ -4,7 +4,9 @@
 # (examples/rbc/rbc.toml at several face_cells, 5 layers) and for the contact scene
 # examples/spread_cell/spread_cell.toml, every variant runs to the scene's own
 # criterion; the study records steps, force evaluations (coarse levels included),
-# wall time and where the run landed (h_min/h_max for the RBC), fits the exponent of
+# wall time and where the run landed (h_min/h_max for the RBC, and how far its
+# h_min/h_max and its thickness profile are from the finest RBC run of the same variant:
+# the relaxation issue's convergence targets), fits the exponent of
 # wall time and of force evaluations against particle count per variant, and writes
 # OUT_DIR/{relaxation.csv, relaxation-cost.png, table.md}.
 # Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS...]
@@ -77,6 +79,19 @@ done
 python3 - "$out" "${variants[@]}" <<'PY'
 import csv, glob, json, math, os, sys
 out, variants = sys.argv[1], sys.argv[2:]
+
+def thickness_profile(run_dir):  # (r, h) of the run's shape_profile.csv [m]
+    with open(f"{run_dir}/shape_profile.csv") as f:
+        return [(float(p["r"]), float(p["thickness"])) for p in csv.DictReader(f)]
+
+def thickness_over_D(row, x):  # h(r) / D at r = x D / 2, linear between the profile's bins
+    D = row["diameter"]
+    pts = [(2 * r / D, h / D) for r, h in row["profile"]]
+    for (x0, h0), (x1, h1) in zip(pts, pts[1:]):
+        if x0 <= x <= x1:
+            return h0 + (h1 - h0) * (x - x0) / (x1 - x0)
+    return pts[0][1] if x < pts[0][0] else pts[-1][1]
+
 rows = []
 for path in sorted(glob.glob(f"{out}/*/summary.json")):
     tag = os.path.basename(os.path.dirname(path))
@@ -92,10 +107,28 @@ for path in sorted(glob.glob(f"{out}/*/summary.json")):
         force_evaluations=s.get("force_evaluations", s["steps"] + 1) + sum(l.get("force_evaluations", l["steps"] + 1) for l in levels),
         wall_s=round(s["wall_time"], 1), status=s["status"], converged=s.get("converged", ""),
         h_ratio=round(shape["h_min_over_h_max"], 3) if shape else "",
-        contact_pairs=s.get("wall_contact cell inner", {}).get("max_active_pairs", "")))
+        contact_pairs=s.get("wall_contact cell inner", {}).get("max_active_pairs", ""),
+        h_exact=shape.get("h_min_over_h_max"), diameter=shape.get("diameter"), profile=thickness_profile(os.path.dirname(path)) if shape else None))
 if not rows:
     sys.exit("relaxation-study.sh: no finished runs")
 rows.sort(key=lambda r: (r["scene"], r["variant"], r["particles"]))
+# Distance to the finest RBC run of the same variant, the measure of the convergence
+# targets (docs/relaxation.md, "Is the default run's end the converged state?"): the
+# difference in h_min/h_max, and the RMS of h / D over 41 points of r / R in 0.05-0.95.
+XS = [0.05 + 0.9 * k / 40 for k in range(41)]
+for r in rows:
+    r["h_ratio_vs_finest"] = r["profile_vs_finest"] = ""
+    if r["scene"] != "rbc" or not r["profile"]:
+        continue
+    fine = max((q for q in rows if q["scene"] == "rbc" and q["variant"] == r["variant"] and q["profile"]),
+               key=lambda q: q["particles"])
+    if fine is r:
+        continue
+    r["h_ratio_vs_finest"] = f"{r['h_exact'] - fine['h_exact']:+.3f}"
+    rms = math.sqrt(sum((thickness_over_D(r, x) - thickness_over_D(fine, x)) ** 2 for x in XS) / len(XS))
+    r["profile_vs_finest"] = f"{100 * rms:.2f}"
+for r in rows:
+    del r["h_exact"], r["diameter"], r["profile"]
 fields = list(rows[0].keys())
 with open(f"{out}/relaxation.csv", "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=fields)
@@ -111,11 +144,13 @@ def exponent(points):  # least-squares slope of log y against log x
     return sum((a - mx) * (b - my) for a, b in zip(lx, ly)) / sxx if sxx > 0 else None
 
 with open(f"{out}/table.md", "w") as f:
-    f.write("| scene | variant | particles | steps (fine) | coarse-level steps | force evaluations | wall [s] | status | h_min/h_max | contact pairs (max) |\n")
-    f.write("|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n")
+    f.write("| scene | variant | particles | steps (fine) | coarse-level steps | force evaluations | wall [s] | status | "
+            "h_min/h_max | minus the finest run's | profile vs the finest run [% of D] | contact pairs (max) |\n")
+    f.write("|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|\n")
     for r in rows:
         f.write(f"| {r['scene']} | {r['variant']} | {r['particles']:,} | {r['steps']:,} | {r['level_steps']:,} | "
-                f"{r['force_evaluations']:,} | {r['wall_s']} | {r['status']} | {r['h_ratio']} | {r['contact_pairs']} |\n")
+                f"{r['force_evaluations']:,} | {r['wall_s']} | {r['status']} | {r['h_ratio']} | "
+                f"{r['h_ratio_vs_finest']} | {r['profile_vs_finest']} | {r['contact_pairs']} |\n")
     f.write("\n| variant | RBC sizes | exponent of wall time | exponent of force evaluations |\n|---|---|---:|---:|\n")
     for v in variants:
         pts = [r for r in rows if r["scene"] == "rbc" and r["variant"] == v]
