@@ -11,14 +11,16 @@ namespace rkpm::sim {
 namespace {
 using materials::lce::director_point;
 
-// Passive energy sum_L V_L W(F_L, h_L) at the current F and Grad h (the latter as last
-// computed by the force loop), over this rank's points.
+// The director's share of the passive energy, sum_L V_L W_h(F_L, h_L) over this rank's
+// points (LiquidCrystalElastomer::director_energy): at fixed F and Grad h, the rest of
+// sum_L V_L W does not change when the director does, so the difference of two of
+// these is the update's change of the passive energy.
 double director_energy(const Body& body, const materials::LiquidCrystalElastomer& model) {
   const DirectorField& dir = *body.director;
   ExactSum total;
 #pragma omp parallel for schedule(static) reduction(+ : total)
   for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
-    total.add(body.gradient.weight[L] * model.energy(body.F[L], director_point(dir, L)));
+    total.add(body.gradient.weight[L] * model.director_energy(body.F[L], dir.h[L], dir.h0[L]));
   return total.value();
 }
 }  // namespace

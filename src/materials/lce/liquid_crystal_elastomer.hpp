@@ -100,6 +100,19 @@ struct LiquidCrystalElastomer {
            k.J * frank_coefficient() * G.squaredNorm();
   }
 
+  // The part of W that depends on h at fixed F, h0 and Grad_X h [Pa]: the h of
+  // tr(l0 F^T l^-1 F) = tr(l0 F^T F) - (s-1)/s (F^T h) . l0 (F^T h), so
+  //   W_h = -mu/2 (s-1)/s [ |F^T h|^2 + (s-1) (h0 . F^T h)^2 ].
+  // Everything else in W (the Frank term included: it has no explicit h) is the same
+  // for every h, so a director update at fixed F and Grad_X h changes W by the change
+  // of W_h alone. The director's energy ledger books that change (sim/director.cpp)
+  // from two passes of this instead of two of energy(): no inverse, no logarithm.
+  double director_energy(const Mat3& F, const Vec3& h, const Vec3& h0) const {
+    const Vec3 v = F.transpose() * h;
+    const double along = h0.dot(v);
+    return -0.5 * mu * ((s - 1.0) / s) * (v.squaredNorm() + (s - 1.0) * along * along);
+  }
+
   // Passive first Piola-Kirchhoff stress dW/dF at fixed h, h0, Grad_X h [Pa].
   Mat3 first_piola_passive(const Mat3& F, const DirectorPoint& d) const {
     return passive_piola(F, d, Kinematics(F));
