@@ -30,8 +30,9 @@ for res in "${resolutions[@]}"; do
   OMP_NUM_THREADS=$threads "$build/src/app/rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
 done
 
-python3 - "$out" "${resolutions[@]}" <<'PY'
-import csv, json, math, sys
+PYTHONPATH="$here/scripts" python3 - "$out" "${resolutions[@]}" <<'PY'
+import json, math, sys
+import rbc_profile
 out, res = sys.argv[1], sys.argv[2:]
 rows = []
 for r in res:
@@ -42,11 +43,11 @@ for r in res:
     except OSError:
         continue
     sh = s["shape"]
-    prof = list(csv.DictReader(open(f"{out}/{tag}/shape_profile.csv")))
     rows.append(dict(tag=tag, particles=s["total_particles"], steps=s["steps"], wall_s=s["wall_time"],
                      converged=s.get("converged"), h_ratio=sh["h_min_over_h_max"], r_hmax=sh["r_hmax_over_R"],
                      rms_ef=sh["rms_vs_evans_fung_over_D"], updown=sh["updown_asymmetry"],
-                     reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6, prof=prof,
+                     reduced_volume=sh["reduced_volume"], diameter_um=sh["diameter"] * 1e6,
+                     profile=rbc_profile.read(f"{out}/{tag}", sh["diameter"]),
                      # The fluid left between the faces on the axis, whether they crossed, and
                      # how many particle pairs of the two faces pressed on each other at most.
                      gap_um=sh["inner_gap_centre"] * 1e6 if "inner_gap_centre" in sh else "",
@@ -55,16 +56,8 @@ for r in res:
 if not rows:
     sys.exit("no finished runs")
 fine = max(rows, key=lambda r: r["particles"])
-def thickness_over_D(row, x):  # h(r)/D at r = x D/2, linear in the bins
-    D = row["diameter_um"] * 1e-6
-    pts = [(2 * float(p["r"]) / D, float(p["thickness"]) / D) for p in row["prof"]]
-    for (x0, h0), (x1, h1) in zip(pts, pts[1:]):
-        if x0 <= x <= x1:
-            return h0 + (h1 - h0) * (x - x0) / (x1 - x0)
-    return pts[0][1] if x < pts[0][0] else pts[-1][1]
-xs = [0.05 + 0.9 * k / 40 for k in range(41)]
 for r in rows:
-    r["rms_vs_finest"] = math.sqrt(sum((thickness_over_D(r, x) - thickness_over_D(fine, x)) ** 2 for x in xs) / len(xs))
+    r["rms_vs_finest"] = rbc_profile.rms_distance(r["profile"], fine["profile"])
 # Observed order of the in-plane refinement: the change of the distance to the finest
 # run between successive resolutions, against the in-plane spacing h ~ 1 / face_cells.
 ordered = sorted(rows, key=lambda r: r["particles"])

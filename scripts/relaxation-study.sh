@@ -76,21 +76,10 @@ for variant in "${variants[@]}"; do
   case $variant in nested|example|example3) ;; *) run_case "spread_cell_$variant" "$here/examples/spread_cell/spread_cell.toml" "$variant" ;; esac
 done
 
-python3 - "$out" "${variants[@]}" <<'PY'
+PYTHONPATH="$here/scripts" python3 - "$out" "${variants[@]}" <<'PY'
 import csv, glob, json, math, os, sys
+import rbc_profile
 out, variants = sys.argv[1], sys.argv[2:]
-
-def thickness_profile(run_dir):  # (r, h) of the run's shape_profile.csv [m]
-    with open(f"{run_dir}/shape_profile.csv") as f:
-        return [(float(p["r"]), float(p["thickness"])) for p in csv.DictReader(f)]
-
-def thickness_over_D(row, x):  # h(r) / D at r = x D / 2, linear between the profile's bins
-    D = row["diameter"]
-    pts = [(2 * r / D, h / D) for r, h in row["profile"]]
-    for (x0, h0), (x1, h1) in zip(pts, pts[1:]):
-        if x0 <= x <= x1:
-            return h0 + (h1 - h0) * (x - x0) / (x1 - x0)
-    return pts[0][1] if x < pts[0][0] else pts[-1][1]
 
 rows = []
 for path in sorted(glob.glob(f"{out}/*/summary.json")):
@@ -108,14 +97,13 @@ for path in sorted(glob.glob(f"{out}/*/summary.json")):
         wall_s=round(s["wall_time"], 1), status=s["status"], converged=s.get("converged", ""),
         h_ratio=round(shape["h_min_over_h_max"], 3) if shape else "",
         contact_pairs=s.get("wall_contact cell inner", {}).get("max_active_pairs", ""),
-        h_exact=shape.get("h_min_over_h_max"), diameter=shape.get("diameter"), profile=thickness_profile(os.path.dirname(path)) if shape else None))
+        h_exact=shape.get("h_min_over_h_max"),
+        profile=rbc_profile.read(os.path.dirname(path), shape["diameter"]) if shape else None))
 if not rows:
     sys.exit("relaxation-study.sh: no finished runs")
 rows.sort(key=lambda r: (r["scene"], r["variant"], r["particles"]))
 # Distance to the finest RBC run of the same variant, the measure of the convergence
-# targets (docs/relaxation.md, "Is the default run's end the converged state?"): the
-# difference in h_min/h_max, and the RMS of h / D over 41 points of r / R in 0.05-0.95.
-XS = [0.05 + 0.9 * k / 40 for k in range(41)]
+# targets: the difference in h_min/h_max, and the profiles' RMS distance (rbc_profile.py).
 for r in rows:
     r["h_ratio_vs_finest"] = r["profile_vs_finest"] = ""
     if r["scene"] != "rbc" or not r["profile"]:
@@ -125,10 +113,9 @@ for r in rows:
     if fine is r:
         continue
     r["h_ratio_vs_finest"] = f"{r['h_exact'] - fine['h_exact']:+.3f}"
-    rms = math.sqrt(sum((thickness_over_D(r, x) - thickness_over_D(fine, x)) ** 2 for x in XS) / len(XS))
-    r["profile_vs_finest"] = f"{100 * rms:.2f}"
+    r["profile_vs_finest"] = f"{100 * rbc_profile.rms_distance(r['profile'], fine['profile']):.2f}"
 for r in rows:
-    del r["h_exact"], r["diameter"], r["profile"]
+    del r["h_exact"], r["profile"]
 fields = list(rows[0].keys())
 with open(f"{out}/relaxation.csv", "w", newline="") as f:
     w = csv.DictWriter(f, fieldnames=fields)
