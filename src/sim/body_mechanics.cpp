@@ -146,6 +146,14 @@ void compute_internal_forces(Body& body) {
       body.material);
 }
 
+void update_deformation_gradients(Body& body) {
+  if (body.distributed()) body.ghosts.pull(body.d);
+  const auto& op = body.gradient;
+#pragma omp parallel for schedule(static)
+  for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
+    body.F[L] = rk::deformation_gradient(op, body.cloud.X, body.d, L);
+}
+
 Mat3 first_piola_at(const Body& body, Index L) {
   const DirectorField* dir = director_of(body);
   const Mat3 grad_h = dir != nullptr && dir->frank ? dir->grad_h[L] : Mat3::Zero();

@@ -342,6 +342,9 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.mass_scaling = p.flag("mass_scaling");
   s.contact_mass_scaling = p.flag("contact_mass_scaling");
   s.fire = FireParameters::named(p.choice("relax_method"));
+  s.newton_krylov_finish = p.choice("relax_finish") == "newton_krylov";
+  s.newton.force_tol = p.real("finish_force_tol");
+  s.newton.max_newton_steps = static_cast<int>(p.integer("finish_max_newton_steps"));
   s.measured_stable_step = p.choice("stable_step") == "measured";
   s.stable_step_interval = p.integer("stable_step_interval");
   return s;

@@ -313,6 +313,60 @@ void Integrator::step_back(StepBook& book) {
   ++step_backs_;
 }
 
+NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& newton) {
+  double stored_before = 0.0;
+  std::vector<std::vector<Vec3>> base_director(world_.bodies.size());
+  double active = 0.0, director_change = 0.0;  // of the last follow
+  NewtonKrylovHooks hooks;
+  hooks.residual = [&] {
+    update_convergence(0.0);
+    return residual_;
+  };
+  hooks.hold = [&] {
+    stored_before = stored_energy();
+    for (std::size_t k = 0; k < world_.bodies.size(); ++k)
+      if (Body& b = *world_.bodies[k]; b.director) {
+        update_deformation_gradients(b);  // F_start from the same sums as every F `follow` makes
+        hold_step_start(b);
+        base_director[k] = b.director->h;
+      }
+  };
+  hooks.follow = [&] {
+    // The director from the base state to the evaluated coordinates, as a step's motion
+    // carries it; the unit pseudo-time cancels in Eq. 7's co-rotation (rate
+    // (F - F_start) / dt times dt).
+    active = director_change = 0.0;
+    for (std::size_t k = 0; k < world_.bodies.size(); ++k)
+      if (Body& b = *world_.bodies[k]; b.director) {
+        update_deformation_gradients(b);
+        b.director->h = base_director[k];
+        const DirectorStep d = advance_director(b, 1.0);
+        active += world_.comm->sum(d.active_work);
+        director_change += world_.comm->sum(d.energy_change);
+      }
+  };
+  hooks.carry = [&](const std::vector<std::vector<Vec3>>& from) {
+    // The loads' work along the update, with the update as the velocity over a unit time
+    // (exact for dead loads).
+    for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
+      Body& b = *world_.bodies[k];
+      for (std::size_t i = 0; i < b.size(); ++i) b.v[i] = b.d[i] - from[k][i];
+    }
+    const double work = power_of_terms();
+    stop_bodies(world_);
+    ledger_.external += work;
+    ledger_.active += active;
+    ledger_.director += director_change;
+    ledger_.dissipated += work + active + director_change - (stored_energy() - stored_before);
+    check_state();
+  };
+  const NewtonKrylovReport report = solve_static_equilibrium(world_, body_shear_modulus_, newton, hooks);
+  force_evaluations_ += report.force_evaluations;
+  term_power_ = power_of_terms();
+  kinetic_measure_ = 0.0;
+  return report;
+}
+
 // The director of each LCE body moves at fixed positions (Eq. 5-8): the active work
 // of the step's motion and the stored energy the update changes, booked apart.
 void Integrator::director(StepBook& book) {

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 namespace rkpm::sim {
@@ -157,6 +158,20 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   for (const auto& w : world->setup_warnings) log << "warning: " << w << "\n";
   IntegratorSettings settings = integrator_settings(scene);
   settings.allow_unstable_dt = options.allow_unstable_dt;
+  if (settings.newton_krylov_finish) {
+    std::string why;
+    if (comm.parallel()) why = fmt::format("it runs on one process (this run has {} ranks)", comm.size());
+    for (const auto& b : world->bodies)
+      if (why.empty() && director_relaxes(*b))
+        why = fmt::format("body '{}' has a director that relaxes by itself (LCE mobility > 0); the finish solves "
+                          "for the coordinates with the director carried, so it needs mobility = 0",
+                          b->name);
+    if (!why.empty()) {
+      log << fmt::format("error: {}:{}: [integrator] relax_finish = \"newton_krylov\": {}\n", scene.integrator.file(),
+                         scene.integrator.line("relax_finish"), why);
+      return kBadInput;
+    }
+  }
   Integrator integrator(*world, settings);
   const bool relax = settings.mode == Mode::Relax;
   const double t_end = scene.integrator.has("t_end") ? scene.integrator.real("t_end") : INFINITY;
@@ -288,6 +303,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   };
 
   io::Progress progress(log, !options.quiet && io::stderr_is_terminal());
+  std::optional<NewtonKrylovReport> finish;
   std::string status = "completed", diagnosis;
   int code = kSuccess;
   try {
@@ -317,6 +333,20 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       if (!options.quiet)
         progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
                         relax ? relax_progress(integrator, settings) : std::string());
+    }
+    if (relax && settings.newton_krylov_finish && code == kSuccess && status == "completed") {
+      if (!options.quiet) progress.finish();
+      const std::int64_t evaluations_before = integrator.force_evaluations();
+      finish = integrator.finish_newton_krylov(settings.newton);
+      log << fmt::format("newton-krylov: {} after {} Newton steps, {} GMRES iterations, {} force evaluations; "
+                         "residual {:.2e} (target {:.0e})\n",
+                         finish->stop, finish->newton_steps, finish->krylov_iterations,
+                         integrator.force_evaluations() - evaluations_before, finish->residual,
+                         settings.newton.force_tol);
+      if (!finish->converged) {
+        status = "not converged";
+        code = kIncomplete;
+      }
     }
     // The final state is always in the series.
     if (series->entries().empty() || series->entries().back().time < world->time) write_frame();
@@ -374,6 +404,19 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       list.push_back(std::move(j));
     }
     json.set("nested_levels", std::move(list));
+  }
+  if (finish) {
+    io::Json j = io::Json::object();
+    j.set("converged", finish->converged);
+    j.set("stop", finish->stop);
+    j.set("newton_steps", static_cast<std::int64_t>(finish->newton_steps));
+    j.set("krylov_iterations", finish->krylov_iterations);
+    j.set("force_evaluations", finish->force_evaluations);
+    j.set("residual", finish->residual);
+    io::Json residuals = io::Json::array();
+    for (double r : finish->residuals) residuals.push_back(r);
+    j.set("residual_after_each_newton_step", std::move(residuals));
+    json.set("newton_krylov", std::move(j));
   }
   if (code != kUnstable && code != kOutputFailed) {
     json.set("energy", energy_json(integrator.measure_energy()));

@@ -352,5 +352,71 @@ TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
   fs::remove_all(dir);
 }
 
+// relax_finish = "newton_krylov": after FIRE's stop the run reports the finish on its
+// log and in summary.json, and ends at the finish's residual.
+TEST(NewtonKrylovFinish, TheRunEndsAtItsTargetAndReportsIt) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("newton_finish");
+  write_text(dir / "sag.toml", relaxing_block_scene("newton_finish",
+                                                    "relax_finish = \"newton_krylov\"\nfinish_force_tol = 1e-11",
+                                                    "[4, 4, 2]"));
+  const RunResult r = run_file(dir / "sag.toml", dir / "out", 0);
+  ASSERT_EQ(r.code, kSuccess) << r.log;
+  EXPECT_NE(r.log.find("newton-krylov: converged after"), std::string::npos) << r.log;
+  const std::string summary = read_text(dir / "out" / "summary.json");
+  EXPECT_NE(summary.find("\"newton_krylov\""), std::string::npos);
+  EXPECT_NE(summary.find("\"stop\": \"converged\""), std::string::npos) << summary;
+  EXPECT_LT(summary_number(dir / "out" / "summary.json", "residual"), 1e-11);
+  EXPECT_GT(summary_number(dir / "out" / "summary.json", "krylov_iterations"), 0);
+  fs::remove_all(dir);
+}
+
+// A finish that runs out of Newton steps ends the run as not converged (exit code 4),
+// with the state it reached in the series.
+TEST(NewtonKrylovFinish, RunningOutOfNewtonStepsIsNotConvergence) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("newton_finish_short");
+  write_text(dir / "sag.toml",
+             relaxing_block_scene("newton_finish_short",
+                                  "relax_finish = \"newton_krylov\"\nfinish_force_tol = 1e-14\nfinish_max_newton_steps = 1",
+                                  "[4, 4, 2]"));
+  const RunResult r = run_file(dir / "sag.toml", dir / "out", 0);
+  EXPECT_EQ(r.code, kIncomplete) << r.log;
+  EXPECT_NE(r.log.find("1 Newton steps without reaching the target"), std::string::npos) << r.log;
+  EXPECT_NE(read_text(dir / "out" / "summary.json").find("\"status\": \"not converged\""), std::string::npos);
+  EXPECT_GE(io::read_pvd(dir / "out" / "frames.pvd").size(), 2u);
+  fs::remove_all(dir);
+}
+
+// The finish carries a director with the coordinates; one that relaxes by itself (L > 0)
+// is an unknown of its own, and the run refuses it before anything is written, naming
+// the key and the body.
+TEST(NewtonKrylovFinish, ADirectorThatRelaxesIsRefused) {
+  const fs::path dir = testing::fresh_dir("newton_finish_lce");
+  write_text(dir / "gel.toml", R"([scene]
+name = "gel"
+[integrator]
+mode = "relax"
+relax_finish = "newton_krylov"
+[[body]]
+name = "gel"
+[body.cloud]
+generator = "sphere"
+radius = 5e-6
+cells = 3
+[body.material]
+model = "lce"
+mu = 1000
+bulk = 1e5
+mobility = 1e-2
+)");
+  const RunResult r = run_file(dir / "gel.toml", dir / "out", 0);
+  EXPECT_EQ(r.code, kBadInput);
+  EXPECT_NE(r.log.find("gel.toml:5: [integrator] relax_finish = \"newton_krylov\": body 'gel'"), std::string::npos)
+      << r.log;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rkpm::sim

@@ -132,6 +132,11 @@ std::vector<Index> one_rank_order(const Body& body);
 // body.force is then complete at the owned particles.
 void compute_internal_forces(Body& body);
 
+// F at this rank's integration points from the current displacements, and nothing else:
+// a third of a force pass (the gather alone). The Newton-Krylov finish carries the
+// director to new coordinates with it before their force pass.
+void update_deformation_gradients(Body& body);
+
 // The first Piola-Kirchhoff stress at point L from the stored F (and Grad_X h) and the
 // current director: what output reports. After a step it is the stress of the state the
 // frame shows (the director has moved since the force pass, at fixed positions).

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "rkpm/sim/fire.hpp"
+#include "rkpm/sim/newton_krylov.hpp"
 #include "rkpm/sim/state_record.hpp"
 #include "rkpm/sim/world.hpp"
 
@@ -27,6 +28,8 @@ struct IntegratorSettings {
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
   double relax_director_tol = 0.0;   // director_residual bound; 0: the director is not part of the stop
   FireParameters fire;           // relax only: the FIRE variant (fire.hpp)
+  bool newton_krylov_finish = false;  // relax only: after FIRE's stop, Newton-Krylov to newton.force_tol
+  NewtonKrylovSettings newton;        // its settings (newton_krylov.hpp)
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool contact_mass_scaling = false;  // relax only: terms raise their particles' inertia to the bodies' step (Term::scale_inertia_to)
   bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
@@ -110,6 +113,15 @@ class Integrator {
   std::int64_t step_backs() const { return step_backs_; }
   // Steps so far that the motion limit shortened.
   std::int64_t motion_limited_steps() const { return motion_limited_steps_; }
+
+  // Relaxation's finish (`relax_finish = "newton_krylov"`): from the present state, Newton-
+  // Krylov steps to a residual below settings.force_tol (newton_krylov.hpp). Each accepted
+  // update carries the director with it (Eq. 7's co-rotation and Eq. 8, as a step's
+  // motion does) and is booked in the ledger like FIRE 2.0's jump: the loads' work along
+  // it at the jump as the velocity, the active work, the director's energy change, and
+  // the rest as dissipation. Its force evaluations count in force_evaluations(). One
+  // process, and directors that do not relax by themselves (L = 0) only.
+  NewtonKrylovReport finish_newton_krylov(const NewtonKrylovSettings& settings);
 
   // Checkpointing: the integrator's own state as named fields (load_state throws
   // StateError naming a missing or mis-sized field).

@@ -33,6 +33,10 @@ void check_integrator(ParamSet& p) {
   }
   if (p.given("relax_method") && p.choice("mode") != "relax")
     throw p.error("relax_method", "no relax_method unless mode = \"relax\"");
+  for (const char* key : {"relax_finish", "finish_force_tol", "finish_max_newton_steps"})
+    if (p.given(key) && p.choice("mode") != "relax") throw p.error(key, "no " + std::string(key) + " unless mode = \"relax\"");
+  if (p.given("finish_force_tol") && p.choice("relax_finish") == "none")
+    throw p.error("finish_force_tol", "no finish_force_tol unless relax_finish = \"newton_krylov\" (it is that finish's target)");
   for (const char* key : {"mass_scaling", "contact_mass_scaling"})
     if (p.flag(key) && p.choice("mode") != "relax")
       throw p.error(key, "false unless mode = \"relax\": a dynamic run's masses are physical");
@@ -100,6 +104,19 @@ ParamTable integrator_section() {
                 "step floor of 0.02 dt_max, and an uphill step first moves the particles back by half a step "
                 "(one extra force evaluation per stop). Both reach the same equilibrium; docs/relaxation.md "
                 "compares their cost."),
+      ParamSpec::choice("relax_finish", {"none", "newton_krylov"}).defaults(std::string("none"))
+          .help("relax mode: what follows FIRE's stop. newton_krylov: Newton steps on the static equilibrium "
+                "f(d) = 0 from FIRE's end state, each linear system solved by GMRES with the tangent applied as a "
+                "difference of two force evaluations (Jacobian-free Newton-Krylov) and a backtracking line search "
+                "on the residual, until the residual measure of relax_force_tol falls below finish_force_tol. "
+                "The director is carried with each update (co-rotation and anchoring); LCE bodies with "
+                "mobility > 0 and distributed runs are refused. docs/relaxation.md, \"Newton-Krylov\"."),
+      ParamSpec::real("finish_force_tol", "-").greater_than(0).defaults(1e-8)
+          .help("relax_finish = \"newton_krylov\": its target, the largest residual force on a particle as a "
+                "stress over the body's shear modulus (the measure of relax_force_tol)."),
+      ParamSpec::integer("finish_max_newton_steps").at_least(1).at_most(1000).defaults(std::int64_t{50})
+          .help("relax_finish = \"newton_krylov\": Newton steps before the finish gives up (the run then ends "
+                "not converged, exit code 4, with the state of its last accepted step)."),
       ParamSpec::boolean("mass_scaling").defaults(false)
           .help("relax mode: mass scaling. Particles whose own stable step (spacing over wave speed) is "
                 "below the median over the scene's particles are made heavier until it reaches the median, "
