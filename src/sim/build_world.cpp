@@ -362,6 +362,21 @@ void check_distributable_terms(const scene::Scene& scene, const World& world) {
     }
 }
 
+void check_newton_krylov_finish(const scene::Scene& scene, const World& world) {
+  const auto& p = scene.integrator;
+  if (p.choice("relax_finish") != "newton_krylov") return;
+  std::string why;
+  if (world.comm->parallel()) why = fmt::format("it runs on one process (this run has {} ranks)", world.comm->size());
+  for (const auto& b : world.bodies)
+    if (why.empty() && director_relaxes(*b))
+      why = fmt::format("body '{}' has a director that relaxes by itself (LCE mobility > 0); the finish solves for "
+                        "the coordinates with the director carried, so it needs mobility = 0",
+                        b->name);
+  if (!why.empty())
+    throw SetupError(fmt::format("{}:{}: [integrator] relax_finish = \"newton_krylov\": {}", p.file(),
+                                 p.line("relax_finish"), why));
+}
+
 std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& comm) {
   auto world = std::make_unique<World>();
   world->comm = &comm;

@@ -151,6 +151,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   try {
     world = build_world(scene, comm);
     check_distributable_terms(scene, *world);
+    check_newton_krylov_finish(scene, *world);
   } catch (const SetupError& e) {
     log << "error: " << e.what() << "\n";
     return kBadInput;
@@ -158,20 +159,6 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   for (const auto& w : world->setup_warnings) log << "warning: " << w << "\n";
   IntegratorSettings settings = integrator_settings(scene);
   settings.allow_unstable_dt = options.allow_unstable_dt;
-  if (settings.newton_krylov_finish) {
-    std::string why;
-    if (comm.parallel()) why = fmt::format("it runs on one process (this run has {} ranks)", comm.size());
-    for (const auto& b : world->bodies)
-      if (why.empty() && director_relaxes(*b))
-        why = fmt::format("body '{}' has a director that relaxes by itself (LCE mobility > 0); the finish solves "
-                          "for the coordinates with the director carried, so it needs mobility = 0",
-                          b->name);
-    if (!why.empty()) {
-      log << fmt::format("error: {}:{}: [integrator] relax_finish = \"newton_krylov\": {}\n", scene.integrator.file(),
-                         scene.integrator.line("relax_finish"), why);
-      return kBadInput;
-    }
-  }
   Integrator integrator(*world, settings);
   const bool relax = settings.mode == Mode::Relax;
   const double t_end = scene.integrator.has("t_end") ? scene.integrator.real("t_end") : INFINITY;

@@ -309,6 +309,32 @@ TEST(DistributedForce, JitteredMooneyRivlinBlockMatchesOneRank) {
 
 // A term that has not said it runs distributed (Term::distributed) stops a run on more
 // than one rank at its [[term]] line, and passes on one rank.
+// The Newton-Krylov finish runs on one process: on more ranks the run is refused at
+// the key's line.
+TEST(DistributedForce, TheNewtonKrylovFinishIsRefusedOnMoreThanOneRank) {
+  std::string text = kMooneyRivlinBlock;
+  const std::string dynamic = "mode = \"dynamic\"\nt_end = 1e-6\n";
+  const auto at = text.find(dynamic);
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, dynamic.size(), "mode = \"relax\"\nrelax_finish = \"newton_krylov\"\n");
+  const auto scene = scene::parse_scene(text, "distributed.toml");
+  for (const par::Comm* comm : {&par::Comm::self(), &par::Comm::world()}) {
+    auto world = build_world(scene, *comm);
+    if (!comm->parallel()) {
+      EXPECT_NO_THROW(check_newton_krylov_finish(scene, *world));
+      continue;
+    }
+    try {
+      check_newton_krylov_finish(scene, *world);
+      ADD_FAILURE() << "not refused";
+    } catch (const SetupError& e) {
+      EXPECT_NE(std::string(e.what()).find("[integrator] relax_finish = \"newton_krylov\": it runs on one process"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(DistributedForce, ATermThatIsNotDistributedIsRefusedAtItsLine) {
   struct OneProcessTerm final : Term {
     std::string name() const override { return "one_process"; }

@@ -315,9 +315,10 @@ TEST(NewtonKrylov, FinishesTheBlockUnderFollowerPressure) {
   testing::ScopedThreads one(1);
   const Finished f = relax_then_finish(block_scene("[]", false), 1e-12);
   const double apart = relative_difference(f.newton_u, f.fire_u);
-  std::printf("10x6x6 block: Newton-Krylov finish %d Newton steps, %lld GMRES iterations, residual %.1e, %.2e from "
-              "FIRE's stop\n",
-              f.report.newton_steps, static_cast<long long>(f.report.krylov_iterations), f.report.residual, apart);
+  std::printf("10x6x6 block: Newton-Krylov finish %d Newton steps, %lld GMRES iterations, %lld force evaluations, "
+              "residual %.1e, %.2e from FIRE's stop\n",
+              f.report.newton_steps, static_cast<long long>(f.report.krylov_iterations),
+              static_cast<long long>(f.report.force_evaluations), f.report.residual, apart);
   EXPECT_TRUE(f.report.converged) << f.report.stop;
   EXPECT_LT(f.residual, 1e-12);
   EXPECT_LT(apart, 1e-3);
