@@ -311,7 +311,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
         break;
       }
       integrator.step();
-      if (world->time >= clock.next_output * (1.0 - 1e-12)) {
+      // A step that ends FIRE before a finish leaves its frame to the finished state
+      // (a frame at the same time cannot follow it).
+      const bool finish_follows = relax && settings.newton_krylov_finish && integrator.converged();
+      if (!finish_follows && world->time >= clock.next_output * (1.0 - 1e-12)) {
         write_frame();
         clock.next_output += every;
       }

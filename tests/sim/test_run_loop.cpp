@@ -371,6 +371,28 @@ TEST(NewtonKrylovFinish, TheRunEndsAtItsTargetAndReportsIt) {
   fs::remove_all(dir);
 }
 
+// The last frame shows the finished state even when FIRE's last step falls on an output
+// time (a frame after every step here): it matches the last frame of the same run that
+// writes only its first and last frames.
+TEST(NewtonKrylovFinish, TheLastFrameIsTheFinishedState) {
+  testing::ScopedThreads one(1);
+  const fs::path dir = testing::fresh_dir("newton_finish_frames");
+  const std::string scene =
+      relaxing_block_scene("newton_finish_frames", "relax_finish = \"newton_krylov\"\nfinish_force_tol = 1e-11",
+                           "[4, 4, 2]");
+  write_text(dir / "every_step.toml", scene + "[output]\nevery = 1e-15\n");
+  write_text(dir / "ends_only.toml", scene);
+  ASSERT_EQ(run_file(dir / "every_step.toml", dir / "every_step", 0).code, kSuccess);
+  ASSERT_EQ(run_file(dir / "ends_only.toml", dir / "ends_only", 0).code, kSuccess);
+  const auto every_step = last_frame(dir / "every_step"), ends_only = last_frame(dir / "ends_only");
+  EXPECT_EQ(io::read_pvd(dir / "every_step" / "frames.pvd").size(),
+            static_cast<std::size_t>(summary_number(dir / "every_step" / "summary.json", "steps")) + 1);
+  ASSERT_EQ(every_step.points.size(), ends_only.points.size());
+  for (std::size_t i = 0; i < every_step.points.size(); ++i)
+    ASSERT_EQ(every_step.points[i], ends_only.points[i]) << "point " << i;
+  fs::remove_all(dir);
+}
+
 // A finish that runs out of Newton steps ends the run as not converged (exit code 4),
 // with the state it reached in the series.
 TEST(NewtonKrylovFinish, RunningOutOfNewtonStepsIsNotConvergence) {
