@@ -54,8 +54,15 @@ GmresResult gmres(const std::function<void(const Eigen::VectorXd&, Eigen::Vector
       }
       const double a = hessenberg(k, k), c = hessenberg(k + 1, k);
       const double rho = std::hypot(a, c);
-      cosines[k] = rho > 0.0 ? a / rho : 1.0;
-      sines[k] = rho > 0.0 ? c / rho : 0.0;
+      if (!(rho > 0.0)) {
+        // A `apply` that maps the new direction to the span of the earlier ones: the
+        // column adds nothing (and would divide by zero); the cycle ends with k columns.
+        hessenberg.col(k).setZero();
+        breakdown = true;
+        break;
+      }
+      cosines[k] = a / rho;
+      sines[k] = c / rho;
       hessenberg(k, k) = rho;
       hessenberg(k + 1, k) = 0.0;
       g[k + 1] = -sines[k] * g[k];

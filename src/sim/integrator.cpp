@@ -314,6 +314,13 @@ void Integrator::step_back(StepBook& book) {
 }
 
 NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& newton) {
+  if (world_.comm->parallel()) throw std::invalid_argument("the Newton-Krylov finish runs on one process");
+  for (const auto& b : world_.bodies)
+    if (director_relaxes(*b))
+      throw std::invalid_argument("the Newton-Krylov finish needs directors that do not relax by themselves "
+                                  "(mobility = 0); body '" + b->name + "' has one that does");
+  // The solve starts from rest: what FIRE's velocities still hold is dissipated.
+  ledger_.dissipated += kinetic_energy(world_);
   double stored_before = 0.0;
   std::vector<std::vector<Vec3>> base_director(world_.bodies.size());
   double active = 0.0, director_change = 0.0;  // of the last follow

@@ -12,8 +12,9 @@ namespace rkpm::sim {
 namespace {
 
 // The free coordinates of every body as one vector (three entries per particle, bodies
-// in order); the residual scaled per particle by 1 / (mu V_I^(2/3)), so that its largest
-// entry is the integrator's residual measure and its 2-norm weighs every particle alike.
+// in order); the residual scaled per particle by 1 / (mu V_I^(2/3)), so that the largest
+// norm of a particle's three entries is the integrator's residual measure and the
+// 2-norm weighs every particle alike.
 class Coordinates {
  public:
   Coordinates(World& world, const std::vector<double>& body_shear_modulus) : world_(world) {
@@ -67,6 +68,15 @@ class Coordinates {
     if (follow) follow();
     forces();
     residual(r);
+  }
+  // Whether the state of the last evaluation is one a step could reach: every J > 0 (a
+  // force evaluation makes F at every point) and finite forces.
+  bool admissible(const Eigen::VectorXd& r) const {
+    if (!r.allFinite()) return false;
+    for (const auto& b : world_.bodies)
+      for (Index L = b->owned_begin(); L < b->owned_end(); ++L)
+        if (!(b->F[L].determinant() > 0.0)) return false;
+    return true;
   }
   // The scaled residual at the world's present forces.
   void residual(Eigen::VectorXd& r) const {
@@ -159,7 +169,8 @@ NewtonKrylovReport solve_static_equilibrium(World& world, const std::vector<doub
     for (int halving = 0; halving <= 10; ++halving, alpha *= 0.5) {
       trial_x = x + alpha * step;
       coords.evaluate(trial_x, trial_r, hooks.follow);
-      if (trial_r.allFinite() && trial_r.norm() <= (1.0 - 1e-4 * alpha) * norm) {
+      // An inverted or non-finite trial state is shortened like one whose residual grew.
+      if (coords.admissible(trial_r) && trial_r.norm() <= (1.0 - 1e-4 * alpha) * norm) {
         accepted = true;
         break;
       }

@@ -412,7 +412,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     json.set("energy", energy_json(integrator.measure_energy()));
     json.set("min_J", integrator.min_J());
     if (relax) {
-      json.set("converged", integrator.converged());
+      json.set("converged", integrator.converged() && (!finish || finish->converged));
       json.set("residual", integrator.residual());
       json.set("kinetic_measure", integrator.kinetic_measure());
       json.set("director_residual", integrator.director_residual());

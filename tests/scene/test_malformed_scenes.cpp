@@ -171,6 +171,10 @@ std::vector<Malformed> malformed_scenes() {
        replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nfinish_force_tol = 1e-9\n"),
        "bad.toml:5: [integrator] finish_force_tol = 1e-09: expected no finish_force_tol unless relax_finish = "
        "\"newton_krylov\""},
+      {"finish step limit without the finish",
+       replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nfinish_max_newton_steps = 5\n"),
+       "bad.toml:5: [integrator] finish_max_newton_steps = 5: expected no finish_max_newton_steps unless "
+       "relax_finish = \"newton_krylov\""},
       {"unknown finish", replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nrelax_finish = \"newton\"\n"),
        "bad.toml:5: [integrator] relax_finish = \"newton\": expected one of"},
       {"vtu cloud whose file does not exist",

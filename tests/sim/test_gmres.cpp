@@ -75,7 +75,7 @@ TEST(Gmres, TheDiagonalPreconditionerCutsTheIterations) {
   std::printf("GMRES(30) to 1e-8 on a 120 x 120 system: %d iterations with the diagonal preconditioner, %d without\n",
               with.iterations, without.iterations);
   EXPECT_TRUE(with.converged);
-  EXPECT_LT(3 * with.iterations, without.iterations);
+  EXPECT_LT(10 * with.iterations, without.iterations);
 }
 
 // An iteration limit stops the solve with the residual reached, not a converged flag.

@@ -266,6 +266,7 @@ struct Finished {
   std::vector<Vec3> fire_u, newton_u;
   NewtonKrylovReport report;
   double residual = 0.0;  // the integrator's measure after the finish
+  double ledger_error_at_stop = 0.0, ledger_error_after = 0.0;  // EnergyLedger::relative_error
 };
 
 Finished relax_then_finish(const std::string& toml, double finish_tol) {
@@ -277,7 +278,9 @@ Finished relax_then_finish(const std::string& toml, double finish_tol) {
   physical_displacement(*sw.world->bodies.front(), f.fire_u);
   NewtonKrylovSettings newton = sw.settings.newton;
   newton.force_tol = finish_tol;
+  f.ledger_error_at_stop = integrator.measure_energy().relative_error();
   f.report = integrator.finish_newton_krylov(newton);
+  f.ledger_error_after = integrator.measure_energy().relative_error();
   f.residual = integrator.residual();
   physical_displacement(*sw.world->bodies.front(), f.newton_u);
   return f;
@@ -306,11 +309,14 @@ TEST(NewtonKrylov, FinishesTheSagSceneWhereTighterFireComesToRest) {
     EXPECT_LT(f.report.residuals[k], 0.1 * f.report.residuals[k - 1]) << "Newton step " << k + 1;
   EXPECT_LT(newton_apart, 1e-3);
   EXPECT_LT(newton_apart, fire_apart);
+  // The ledger books the finish (the kinetic energy FIRE left, the load's work, the rest
+  // as dissipation): its balance is what it was at FIRE's stop.
+  EXPECT_NEAR(f.ledger_error_after, f.ledger_error_at_stop, 1e-3 * f.ledger_error_at_stop);
 }
 
 // The block on rollers under a follower pressure (a nonsymmetric tangent, which GMRES
-// takes as it comes): the finish lands within 1e-3 of FIRE's stop at 1e-7 mu and at a
-// residual of 1e-12 mu.
+// takes as it comes): the finish reaches a residual of 1e-12 mu, and FIRE's stop at its
+// tight 1e-7 mu is within ten times its measured distance (2.5e-6) of it.
 TEST(NewtonKrylov, FinishesTheBlockUnderFollowerPressure) {
   testing::ScopedThreads one(1);
   const Finished f = relax_then_finish(block_scene("[]", false), 1e-12);
@@ -321,7 +327,7 @@ TEST(NewtonKrylov, FinishesTheBlockUnderFollowerPressure) {
               static_cast<long long>(f.report.force_evaluations), f.report.residual, apart);
   EXPECT_TRUE(f.report.converged) << f.report.stop;
   EXPECT_LT(f.residual, 1e-12);
-  EXPECT_LT(apart, 1e-3);
+  EXPECT_LT(apart, 2.5e-5);  // FIRE's own stop at 1e-7 mu: measured 2.5e-6
 }
 
 // FIRE 2.0 (Guenole et al. 2020), whose uphill steps move the particles back by half a

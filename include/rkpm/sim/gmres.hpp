@@ -23,7 +23,9 @@ struct GmresResult {
 };
 
 // Solves A z = b approximately, z = P w with P = diag(preconditioner): GMRES minimises
-// |b - A P w| over the Krylov space of A P, so the residual it reports is the true one.
+// |b - A P w| over the Krylov space of A P. The residual it reports is that of its
+// least-squares problem, the true one for a linear A in exact arithmetic (an A made by
+// differences of forces is linear only to its difference error).
 // `apply(v, out)` sets out = A v. Deterministic: every sum runs in one order.
 GmresResult gmres(const std::function<void(const Eigen::VectorXd&, Eigen::VectorXd&)>& apply, const Eigen::VectorXd& b,
                   const Eigen::VectorXd& preconditioner, const GmresSettings& settings, Eigen::VectorXd& z);

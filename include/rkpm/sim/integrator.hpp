@@ -117,10 +117,13 @@ class Integrator {
   // Relaxation's finish (`relax_finish = "newton_krylov"`): from the present state, Newton-
   // Krylov steps to a residual below settings.force_tol (newton_krylov.hpp). Each accepted
   // update carries the director with it (Eq. 7's co-rotation and Eq. 8, as a step's
-  // motion does) and is booked in the ledger like FIRE 2.0's jump: the loads' work along
-  // it at the jump as the velocity, the active work, the director's energy change, and
-  // the rest as dissipation. Its force evaluations count in force_evaluations(). One
-  // process, and directors that do not relax by themselves (L = 0) only.
+  // motion does) and is booked in the ledger: the loads' work along it as their power at
+  // the new state with the update as the velocity over a unit time (exact for dead
+  // loads; one-sided, so second order in the update, for follower loads), the active
+  // work, the director's energy change, and the rest of the stored energy's change as
+  // dissipation; the kinetic energy FIRE leaves is dissipated at the start. Its force
+  // evaluations count in force_evaluations(). One process, and directors that do not
+  // relax by themselves (L = 0) only: std::invalid_argument otherwise.
   NewtonKrylovReport finish_newton_krylov(const NewtonKrylovSettings& settings);
 
   // Checkpointing: the integrator's own state as named fields (load_state throws

@@ -35,8 +35,9 @@ void check_integrator(ParamSet& p) {
     throw p.error("relax_method", "no relax_method unless mode = \"relax\"");
   for (const char* key : {"relax_finish", "finish_force_tol", "finish_max_newton_steps"})
     if (p.given(key) && p.choice("mode") != "relax") throw p.error(key, "no " + std::string(key) + " unless mode = \"relax\"");
-  if (p.given("finish_force_tol") && p.choice("relax_finish") == "none")
-    throw p.error("finish_force_tol", "no finish_force_tol unless relax_finish = \"newton_krylov\" (it is that finish's target)");
+  for (const char* key : {"finish_force_tol", "finish_max_newton_steps"})
+    if (p.given(key) && p.choice("relax_finish") == "none")
+      throw p.error(key, "no " + std::string(key) + " unless relax_finish = \"newton_krylov\" (a setting of that finish)");
   for (const char* key : {"mass_scaling", "contact_mass_scaling"})
     if (p.flag(key) && p.choice("mode") != "relax")
       throw p.error(key, "false unless mode = \"relax\": a dynamic run's masses are physical");
