@@ -313,7 +313,8 @@ void Integrator::step_back(StepBook& book) {
   ++step_backs_;
 }
 
-NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& newton) {
+NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& newton,
+                                                    const std::function<void(const NewtonKrylovReport&)>& stepped) {
   if (world_.comm->parallel()) throw std::invalid_argument("the Newton-Krylov finish runs on one process");
   for (const auto& b : world_.bodies)
     if (director_relaxes(*b))
@@ -367,6 +368,7 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
     ledger_.dissipated += work + active + director_change - (stored_energy() - stored_before);
     check_state();
   };
+  hooks.stepped = stepped;
   const NewtonKrylovReport report = solve_static_equilibrium(world_, body_shear_modulus_, newton, hooks);
   force_evaluations_ += report.force_evaluations;
   term_power_ = power_of_terms();

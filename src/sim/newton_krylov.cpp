@@ -178,8 +178,8 @@ NewtonKrylovReport solve_static_equilibrium(World& world, const std::vector<doub
     if (!accepted) {
       coords.evaluate(x, r, hooks.follow);  // back to the last accepted state, its director and forces
       report.stop = fmt::format(
-          "the line search found no decrease of the residual after Newton step {} (GMRES "
-          "reached {:.2g} of its right-hand side in {} iterations)",
+          "the line search found no decrease of the residual after Newton step {} (GMRES's "
+          "estimate: {:.2g} of its right-hand side after {} iterations)",
           report.newton_steps + 1, solved.relative_residual, solved.iterations);
       report.residual = hooks.residual();
       break;
@@ -192,6 +192,8 @@ NewtonKrylovReport solve_static_equilibrium(World& world, const std::vector<doub
     report.residual = hooks.residual();
     report.residuals.push_back(report.residual);
     ++report.newton_steps;
+    report.force_evaluations = coords.evaluations;
+    if (hooks.stepped) hooks.stepped(report);
     // Eisenstat and Walker's second choice (gamma 0.9, exponent 2) with its safeguard:
     // loose solves far from the solution, tighter ones as the residual falls.
     const double new_norm = r.norm();

@@ -327,7 +327,16 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     if (relax && settings.newton_krylov_finish && code == kSuccess && status == "completed") {
       if (!options.quiet) progress.finish();
       const std::int64_t evaluations_before = integrator.force_evaluations();
-      finish = integrator.finish_newton_krylov(settings.newton);
+      // One line per Newton step (a handful to a few dozen): what a long finish is doing.
+      auto report_step = [&](const NewtonKrylovReport& so_far) {
+        if (options.quiet) return;
+        log << fmt::format("newton-krylov step {}: residual {:.2e} (target {:.0e}), {} GMRES iterations and {} "
+                           "force evaluations so far, {:.1f} s\n",
+                           so_far.newton_steps, so_far.residual, settings.newton.force_tol, so_far.krylov_iterations,
+                           so_far.force_evaluations, elapsed());
+        log.flush();
+      };
+      finish = integrator.finish_newton_krylov(settings.newton, report_step);
       log << fmt::format("newton-krylov: {} after {} Newton steps, {} GMRES iterations, {} force evaluations; "
                          "residual {:.2e} (target {:.0e})\n",
                          finish->stop, finish->newton_steps, finish->krylov_iterations,

@@ -353,16 +353,29 @@ TEST(RelaxProgress, ANestedLevelShowsItsOwnLineBeforeItsResult) {
 }
 
 // relax_finish = "newton_krylov": after FIRE's stop the run reports the finish on its
-// log and in summary.json, and ends at the finish's residual.
+// log (a line per Newton step unless quiet, then the outcome) and in summary.json, and
+// ends at the finish's residual.
 TEST(NewtonKrylovFinish, TheRunEndsAtItsTargetAndReportsIt) {
   testing::ScopedThreads one(1);
   const fs::path dir = testing::fresh_dir("newton_finish");
   write_text(dir / "sag.toml", relaxing_block_scene("newton_finish",
                                                     "relax_finish = \"newton_krylov\"\nfinish_force_tol = 1e-11",
                                                     "[4, 4, 2]"));
-  const RunResult r = run_file(dir / "sag.toml", dir / "out", 0);
+  const RunResult r = run_file(dir / "sag.toml", dir / "out", 0, {}, false, /*quiet=*/false);
   ASSERT_EQ(r.code, kSuccess) << r.log;
   EXPECT_NE(r.log.find("newton-krylov: converged after"), std::string::npos) << r.log;
+  // The progress lines count the Newton steps 1, 2, ... up to the summary's, and the
+  // last one shows the residual the finish ended at.
+  const std::regex step_line(R"(newton-krylov step ([0-9]+): residual ([0-9.e+-]+) \(target 1e-11\))");
+  int lines = 0;
+  double last_shown = -1.0;
+  for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), step_line); it != std::sregex_iterator(); ++it) {
+    EXPECT_EQ(std::stoi((*it)[1].str()), ++lines) << r.log;
+    last_shown = std::stod((*it)[2].str());
+  }
+  EXPECT_EQ(lines, static_cast<int>(summary_number(dir / "out" / "summary.json", "newton_steps"))) << r.log;
+  const double final_residual = summary_number(dir / "out" / "summary.json", "residual");
+  EXPECT_NEAR(last_shown, final_residual, 0.006 * final_residual) << r.log;
   const std::string summary = read_text(dir / "out" / "summary.json");
   EXPECT_NE(summary.find("\"newton_krylov\""), std::string::npos);
   EXPECT_NE(summary.find("\"stop\": \"converged\""), std::string::npos) << summary;

@@ -10,6 +10,7 @@
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -124,7 +125,9 @@ class Integrator {
   // dissipation; the kinetic energy FIRE leaves is dissipated at the start. Its force
   // evaluations count in force_evaluations(). One process, and directors that do not
   // relax by themselves (L = 0) only: std::invalid_argument otherwise.
-  NewtonKrylovReport finish_newton_krylov(const NewtonKrylovSettings& settings);
+  // `stepped` (optional) is called after each accepted Newton step (NewtonKrylovHooks).
+  NewtonKrylovReport finish_newton_krylov(const NewtonKrylovSettings& settings,
+                                          const std::function<void(const NewtonKrylovReport&)>& stepped = {});
 
   // Checkpointing: the integrator's own state as named fields (load_state throws
   // StateError naming a missing or mis-sized field).

@@ -51,6 +51,9 @@ struct NewtonKrylovHooks {
   // and director: the caller books the update in the energy ledger and checks the state.
   // `from` holds each body's coordinates before the update.
   std::function<void(const std::vector<std::vector<Vec3>>& from)> carry;
+  // Optional: called after each accepted Newton step with the report so far, so that a
+  // long finish shows where it is (a step of a 1e5-particle shell takes tens of seconds).
+  std::function<void(const NewtonKrylovReport& so_far)> stepped;
 };
 
 // Runs on one process only (the caller refuses a distributed world). The world's
