@@ -328,8 +328,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       if (!options.quiet) progress.finish();
       const std::int64_t evaluations_before = integrator.force_evaluations();
       // One line per Newton step (a handful to a few dozen): what a long finish is doing.
-      auto report_step = [&](const NewtonKrylovReport& so_far) {
-        if (options.quiet) return;
+      std::function<void(const NewtonKrylovReport&)> report_step;
+      if (!options.quiet) report_step = [&](const NewtonKrylovReport& so_far) {
         log << fmt::format("newton-krylov step {}: residual {:.2e} (target {:.0e}), {} GMRES iterations and {} "
                            "force evaluations so far, {:.1f} s\n",
                            so_far.newton_steps, so_far.residual, settings.newton.force_tol, so_far.krylov_iterations,

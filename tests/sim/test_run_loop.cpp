@@ -366,13 +366,14 @@ TEST(NewtonKrylovFinish, TheRunEndsAtItsTargetAndReportsIt) {
   EXPECT_NE(r.log.find("newton-krylov: converged after"), std::string::npos) << r.log;
   // The progress lines count the Newton steps 1, 2, ... up to the summary's, and the
   // last one shows the residual the finish ended at.
-  const std::regex step_line(R"(newton-krylov step ([0-9]+): residual ([0-9.e+-]+) \(target 1e-11\))");
+  const std::regex step_line(R"(newton-krylov step ([0-9]+): residual ([0-9.eE+-]+) \(target 1e-11\))");
   int lines = 0;
   double last_shown = -1.0;
   for (auto it = std::sregex_iterator(r.log.begin(), r.log.end(), step_line); it != std::sregex_iterator(); ++it) {
     EXPECT_EQ(std::stoi((*it)[1].str()), ++lines) << r.log;
     last_shown = std::stod((*it)[2].str());
   }
+  ASSERT_GT(lines, 0) << r.log;
   EXPECT_EQ(lines, static_cast<int>(summary_number(dir / "out" / "summary.json", "newton_steps"))) << r.log;
   const double final_residual = summary_number(dir / "out" / "summary.json", "residual");
   EXPECT_NEAR(last_shown, final_residual, 0.006 * final_residual) << r.log;
