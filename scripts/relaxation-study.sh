@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Relaxation study (docs/relaxation.md): the cost of reaching static equilibrium with
 # each relaxation variant against particle count. For the red-blood-cell ladder
-# (examples/rbc/rbc.toml at several face_cells, 5 layers) and for the contact scene
+# (examples/rbc/rbc.toml at several face_cells, its layers or the given ones) and for the contact scene
 # examples/spread_cell/spread_cell.toml, every variant runs to the scene's own
 # criterion; the study records steps, force evaluations (coarse levels included),
 # wall time and where the run landed (h_min/h_max for the RBC, and how far its
@@ -9,9 +9,10 @@
 # the relaxation issue's convergence targets), fits the exponent of
 # wall time and of force evaluations against particle count per variant, and writes
 # OUT_DIR/{relaxation.csv, relaxation-cost.png, table.md}.
-# Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS...]
-#   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles; the two largest take
-#   about an hour each with plain FIRE on 2 cores). RKPM_VARIANTS selects variants
+# Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS[:LAYERS]...]
+#   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles at the example's 5
+#   layers; with plain FIRE the two largest take about an hour each on 2 cores);
+#   FACE_CELLS:LAYERS sets the wall's layers too (docs/rbc.md, "The wall's middle layer"). RKPM_VARIANTS selects variants
 #   (default "fire nested example"; also "measured", "mass_scaling", "contact" and
 #   "fire2"). Every variant is plain FIRE plus its own keys: the scenes' relaxation keys
 #   (nested_levels, contact_mass_scaling) are taken out first, and "example" puts back
@@ -71,9 +72,12 @@ run_case() {
 }
 
 for variant in "${variants[@]}"; do
-  for fc in "${face_cells[@]}"; do
-    sed -e "s/^face_cells = .*/face_cells = $fc/" "$here/examples/rbc/rbc.toml" > "$out/rbc_fc$fc.base.toml"
-    run_case "rbc_fc${fc}_$variant" "$out/rbc_fc$fc.base.toml" "$variant"
+  for res in "${face_cells[@]}"; do
+    # FACE_CELLS or FACE_CELLS:LAYERS; without layers the example's own, and the tag as before.
+    fc=${res%%:*}; tag=fc$fc; layers_edit=()
+    if [[ $res == *:* ]]; then tag=fc${fc}l${res##*:}; layers_edit=(-e "s/^layers = .*/layers = ${res##*:}/"); fi
+    sed -e "s/^face_cells = .*/face_cells = $fc/" "${layers_edit[@]}" "$here/examples/rbc/rbc.toml" > "$out/rbc_$tag.base.toml"
+    run_case "rbc_${tag}_$variant" "$out/rbc_$tag.base.toml" "$variant"
   done
   # The contact scene's imported substrate cannot be coarsened: no nested levels there.
   # Imported clouds have no coarser levels.
