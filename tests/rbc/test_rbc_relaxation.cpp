@@ -184,7 +184,7 @@ void expect_evans_fung_disc(const Relaxed& r, double largest_diameter_ratio = 0.
   EXPECT_LT(r.final.rms_vs_evans_fung, 0.05);
   // The diameter shrinks (the rim's outer half contracts in-plane) and the reduced
   // volume stays near the discocyte range (Evans-Fung 0.644; this coarse shell ends
-  // at about 0.65, the default one at about 0.58-0.61).
+  // at about 0.65, the default one at about 0.62).
   EXPECT_LT(r.final.diameter, largest_diameter_ratio * r.initial.diameter);
   EXPECT_GT(r.final.reduced_volume, 0.55);
   EXPECT_LT(r.final.reduced_volume, 0.68);
@@ -320,10 +320,10 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
 // activity, docs/rbc.md), and each stays where it is under ten times tighter criteria.
 // Both are biconcave by the scene's criteria with the same shape to 1e-4 in h_min/h_max
 // (0.3414 and 0.3415; 0.4366 and 0.4397 before) and 1e-4 of D in RMS against Evans-Fung
-// (3.39 and 3.40 %); how close within the family depends on the path (docs/relaxation.md). The bounds would catch a route that lands
-// on another branch: with a coarse level at face_cells 6 the route ends at h_min/h_max
-// 0.385 against 0.439, 9.4e-2 apart (docs/relaxation.md, "Which rest state a route
-// reaches").
+// (3.39 and 3.40 %); how close within the family depends on the path (docs/relaxation.md).
+// The bounds would catch a route that lands on another branch: before the fix, with a
+// coarse level at face_cells 6, the route ended at h_min/h_max 0.385 against 0.439,
+// 9.4e-2 apart (docs/relaxation.md, "Which rest state a route reaches").
 // The Newton-Krylov finish from each stop confirms it: both end at a residual below
 // 1e-9 mu, 3.23e-2 apart, in the same shape (h_min/h_max 0.3414 and 0.3415): two exact
 // rest states.

@@ -191,7 +191,7 @@ int shell_layer(const Vec3& X, const Vec3& semi_axes, double thickness, int laye
 // are not offset surfaces, so the middle layer is not equidistant from the two surfaces'
 // nearest particles (0.46-0.54 of the way through a 0.5 um wall, 0.45-0.55 at 0.75 um);
 // it was once given wholly to one half, all but 130 of its 6,146 particles in the RBC
-// scene, so that a half-wall driver acted on 2.76 layers' worth of particles, not 2.5.
+// scene, so that a half-wall driver acted on 2.77 layers' worth of particles, not 2.5.
 TEST(ActivityField, TheMiddleLayerOfAnOddWallCarriesHalfAHalfWallActivity) {
   const Vec3 semi_axes(5e-6, 5e-6, 1.5e-6);
   for (const double thickness : {0.3e-6, 0.5e-6, 0.75e-6}) {

@@ -64,6 +64,8 @@ std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& 
   const auto near = edge_depth(cloud, neighbours, cloud.surface_bit(surface));
   const auto far = edge_depth(cloud, neighbours, cloud.surface_bit(other));
   std::vector<double> side(cloud.size());
+  // A particle reached from neither surface (a piece of the mesh without one) is counted
+  // as on the mid-surface, like one equally deep below both.
   for (std::size_t i = 0; i < cloud.size(); ++i)
     side[i] = near[i] == far[i] ? 0.5 : (near[i] >= 0 && (far[i] < 0 || near[i] < far[i]) ? 1.0 : 0.0);
   return side;
