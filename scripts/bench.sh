@@ -2,7 +2,7 @@
 # Runs the step benchmarks (bench_sim: internal force per material, director
 # update, contact pair list and forces, surface tension, one frame of output, whole
 # steps) and the operator benchmarks (bench_rk), and writes Google Benchmark's CSV
-# into OUT_DIR: bench_sim.csv, bench_rk.csv. docs/performance.md explains the counters.
+# into OUT_DIR: bench_sim.csv, bench_rk.csv. docs/verification/performance.md explains the counters.
 # Usage: bash scripts/bench.sh [BUILD_DIR] [OUT_DIR] [Google Benchmark options...]
 #   e.g. bash scripts/bench.sh build out/bench --benchmark_min_time=0.1 --benchmark_filter=Contact
 # Threads: OMP_NUM_THREADS (default 2, the threads the scaling study's bound uses).

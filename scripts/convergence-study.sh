@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Regenerates the convergence study of the RK discretisation with nodal integration
 # (Lame sphere under internal pressure): docs/figures/convergence.csv, the plots
-# docs/figures/convergence-*.png and the generated part of docs/convergence.md.
+# docs/figures/convergence-*.png and the generated part of docs/verification/convergence.md.
 # Usage: bash scripts/convergence-study.sh [extra rkpm_convergence options]
 # The build directory is build/ unless RKPM_BUILD_DIR says otherwise.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=${RKPM_BUILD_DIR:-"$here/build"}
 figures="$here/docs/figures"
-doc="$here/docs/convergence.md"
+doc="$here/docs/verification/convergence.md"
 
 command -v gnuplot >/dev/null || { echo "convergence-study.sh: gnuplot is required for the plots" >&2; exit 1; }
 grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||

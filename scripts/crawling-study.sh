@@ -5,7 +5,7 @@
 # (x (4.5 - 4 y/L0)), and writes
 #   docs/figures/crawling_drift.csv   time and centroid drift along y of the three runs
 #   docs/figures/crawling_drift.png   the drift against time (gnuplot)
-#   the generated table of docs/crawling.md
+#   the generated table of docs/verification/crawling.md
 # Usage: bash scripts/crawling-study.sh [--coarse]
 #   --coarse: an 11-cell sphere on a 30 x 30 x 3 block (s0 = 1 um), about 1 minute;
 #             writes into out/crawling-study only (the docs keep the default run).
@@ -18,7 +18,7 @@ build=${RKPM_BUILD_DIR:-"$here/build"}
 threads=${RKPM_THREADS:-2}
 out=${RKPM_OUT:-"$here/out/crawling-study"}
 scene="$here/examples/crawling/crawling.toml"
-doc="$here/docs/crawling.md"
+doc="$here/docs/verification/crawling.md"
 coarse=0
 [ "${1:-}" = "--coarse" ] && coarse=1
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Every example scene distributed against one process (docs/distributed.md): each scene
+# Every example scene distributed against one process (docs/verification/distributed.md): each scene
 # runs as one process and on each rank count of RKPM_RANKS (mpirun, one thread per
 # rank), and `rkpm compare` gives the largest distance between the final positions over
 # the largest displacement. Relaxations run to the scene's own convergence (the same
 # step count is expected); dynamic scenes run RKPM_DYNAMIC_STEPS steps, as the
 # matching target states. Writes OUT/distributed-match.csv and the table: the generated
-# part of docs/distributed.md with the default OUT (docs/figures), otherwise
+# part of docs/verification/distributed.md with the default OUT (docs/figures), otherwise
 # OUT/distributed-match.md.
 # Usage: bash scripts/distributed-match.sh [BUILD_DIR] [OUT_DIR]
 #   environment: RKPM_RANKS (default "2 4"), RKPM_DYNAMIC_STEPS (default 200),
@@ -94,7 +94,7 @@ END {
   }
 }' "$csv" >"$md"
 cat "$md"
-doc=$here/docs/distributed.md
+doc=$here/docs/verification/distributed.md
 if [ "$out" = "$here/docs/figures" ]; then
   awk -v md="$md" '
     /<!-- BEGIN GENERATED: scripts\/distributed-match.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; skip = 1; next }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Distributed-run study (docs/distributed.md): weak and strong scaling of a clamped
+# Distributed-run study (docs/verification/distributed.md): weak and strong scaling of a clamped
 # Mooney-Rivlin block under a body force (the sag example's physics, dynamic with
 # damping) on 1 and 2 ranks of this machine, one thread per rank, and the strong case
 # again as one rank with 2 threads (the same cores without MPI); the ghost fraction
@@ -9,7 +9,7 @@
 # Time per step is measured as the difference of two runs of S1 and S2 steps
 # (wall time from summary.json), so the set-up cancels; each figure is the median of
 # REPEATS such differences. Writes OUT/distributed.csv, OUT/distributed-scaling.png and
-# the table with the model: the generated part of docs/distributed.md with the default
+# the table with the model: the generated part of docs/verification/distributed.md with the default
 # OUT (docs/figures), otherwise OUT/distributed.md.
 # Usage: bash scripts/distributed-study.sh [BUILD_DIR] [OUT_DIR]
 #   environment: RKPM_CELLS (default 24: the 1-rank block is 25 x 25 x 25 particles),
@@ -131,7 +131,7 @@ for c in "${weak_cells[@]}"; do
   measure weak 2 1 $((2 * c + 1)) "$c"
 done
 
-# The table and the model: into docs/distributed.md with the default OUT_DIR, else OUT_DIR/distributed.md.
+# The table and the model: into docs/verification/distributed.md with the default OUT_DIR, else OUT_DIR/distributed.md.
 md=$out/distributed.md
 [ "$out" = "$here/docs/figures" ] && md=$scratch/distributed.md
 awk -F, -v rev="$revision" -v load="$load" -v reps="$repeats" -v s1="$s1" -v s2="$s2" -v cores="$cores" '
@@ -148,7 +148,7 @@ END {
   for (i = 7; i + 1 <= last; i += 2)
     others = others sprintf("; at %d particles per rank **%.1f %%**", npr[i], 100 * st[i] / st[i + 1])
   printf "\nWeak-scaling efficiency 1 -> 2 ranks (time per step at fixed particles per rank): **%.1f %%** at %d particles per rank%s.", 100 * weak, npr[2], others
-  printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. Where the weak case loses its time is discussed above the table (docs/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
+  printf " Strong-scaling speed-up at %d particles: **%.2f** (efficiency %.0f %%). The same cores as one rank with 2 OpenMP threads: %.2f ms per step, so 2 ranks run at **%.2f x** the threaded speed. Where the weak case loses its time is discussed above the table (docs/verification/distributed.md).\n", n[4], strong, 50 * strong, 1000 * st[6], st[6] / st[5]
   # The model: a step on P ranks of m particles each costs m t_c (the measured
   # one-rank time per particle-step) plus the ghost exchange (two messages to each
   # neighbour: displacements in, force records out, as many doubles per ghost as
@@ -190,8 +190,8 @@ plot $weak_plots \
      "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$6) with linespoints title "strong: fixed total", \\
      "< awk -F, '\$1==\"threads\"' $csv" using (2):(1000*\$6) with points pt 7 ps 1.5 title "1 rank x 2 threads, strong size"
 EOF
-# With the default OUT_DIR the table also replaces the generated part of docs/distributed.md.
-doc=$here/docs/distributed.md
+# With the default OUT_DIR the table also replaces the generated part of docs/verification/distributed.md.
+doc=$here/docs/verification/distributed.md
 if [ "$out" = "$here/docs/figures" ]; then
   awk -v md="$md" '
     /<!-- BEGIN GENERATED: scripts\/distributed-study.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; print "![time per step](figures/distributed-scaling.png)"; print ""; skip = 1; next }

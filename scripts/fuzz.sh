@@ -5,7 +5,7 @@
 # Installs clang and libFuzzer (install-deps.sh --fuzz), builds the two fuzz
 # programs with ASan and UBSan in build-fuzz/, runs each on one core from the seeds
 # and the committed corpus, minimises what they reached into tests/fuzz/corpus/,
-# and prints a report that also replaces the "Last run" section of docs/fuzzing.md.
+# and prints a report that also replaces the "Last run" section of docs/verification/fuzzing.md.
 # Inputs that crash, hang or exhaust memory are kept in build-fuzz/run/<target>/artifacts/.
 # Exits non-zero if a fuzzer found anything.
 set -euo pipefail
@@ -109,7 +109,7 @@ table=$(
 )
 echo
 echo "$table"
-doc="$here/docs/fuzzing.md"
+doc="$here/docs/verification/fuzzing.md"
 if [ -f "$doc" ] && grep -q '<!-- fuzz-report:begin -->' "$doc"; then
   printf '%s\n' "$table" >"$run/report.md"
   awk -v report="$run/report.md" '
@@ -117,7 +117,7 @@ if [ -f "$doc" ] && grep -q '<!-- fuzz-report:begin -->' "$doc"; then
     !skipping { print }
     /<!-- fuzz-report:begin -->/ { while ((getline line < report) > 0) print line; skipping = 1 }
   ' "$doc" >"$run/fuzzing.md" && cp "$run/fuzzing.md" "$doc"
-  echo "(written to docs/fuzzing.md)"
+  echo "(written to docs/verification/fuzzing.md)"
 fi
 
 found=$(( $(ls "$run/scene/artifacts" | wc -l) + $(ls "$run/vtu/artifacts" | wc -l) ))

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Relaxation study (docs/relaxation.md): the cost of reaching static equilibrium with
+# Relaxation study (docs/verification/relaxation.md): the cost of reaching static equilibrium with
 # each relaxation variant against particle count. For the red-blood-cell ladder
 # (examples/rbc/rbc.toml at several face_cells, its layers or the given ones) and for the contact scene
 # examples/spread_cell/spread_cell.toml, every variant runs to the scene's own
@@ -12,7 +12,7 @@
 # Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS[:LAYERS]...]
 #   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles at the example's 5
 #   layers; with plain FIRE the two largest take about an hour each on 2 cores);
-#   FACE_CELLS:LAYERS sets the wall's layers too (docs/rbc.md, "The wall's middle layer"). RKPM_VARIANTS selects variants
+#   FACE_CELLS:LAYERS sets the wall's layers too (docs/verification/rbc.md, "The wall's middle layer"). RKPM_VARIANTS selects variants
 #   (default "fire nested example"; also "measured", "mass_scaling", "contact" and
 #   "fire2"). Every variant is plain FIRE plus its own keys: the scenes' relaxation keys
 #   (nested_levels, contact_mass_scaling) are taken out first, and "example" puts back

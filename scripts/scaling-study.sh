@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Particle-count scaling study (docs/performance.md): for a Mooney-Rivlin block, an
+# Particle-count scaling study (docs/verification/performance.md): for a Mooney-Rivlin block, an
 # LCE sphere and the RBC shell from 1e3 to --max particles, the set-up time (split by
 # stage), the time per step with 1 and 2 threads, the internal force against the
 # STREAM-triad bandwidth bound, peak memory per particle and the fitted exponents;
 # then the default RBC relaxation's wall time. Each size runs in its own process.
 # Writes OUT_DIR/perf-scaling.csv and OUT_DIR/perf-{step,setup,memory}-vs-particles.png;
 # with the default OUT_DIR (docs/figures) also the generated part of
-# docs/performance.md, otherwise OUT_DIR/perf-scaling.md.
+# docs/verification/performance.md, otherwise OUT_DIR/perf-scaling.md.
 # Usage: bash scripts/scaling-study.sh [BUILD_DIR] [OUT_DIR] [--max N] [--no-rbc-run] [rkpm_scaling options...]
 #   BUILD_DIR defaults to build/, --max to 1000000 (hours on 2 cores; 100000 takes minutes).
 #   --no-rbc-run skips the RBC relaxation (about 40 min at 1 thread on the seed's cell).
@@ -29,7 +29,7 @@ while [ $# -gt 0 ]; do
 done
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-doc=$here/docs/performance.md
+doc=$here/docs/verification/performance.md
 update_doc=0
 [ "$out" = "$here/docs/figures" ] && update_doc=1
 

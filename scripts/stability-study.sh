@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Stability study of the explicit integrator on stiff and extreme cases: writes
-# docs/figures/stability.csv and the generated table of docs/stability.md.
+# docs/figures/stability.csv and the generated table of docs/verification/stability.md.
 # Every case is a scene file generated into a temporary directory and run with
 # `rkpm run` for a fixed number of steps (free bodies, undamped except the releases run
 # to rest; the energy ledger, dissipation included, must balance); the columns come
@@ -13,7 +13,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 build=${RKPM_BUILD_DIR:-"$here/build"}
 threads=${RKPM_THREADS:-2}
 figures="$here/docs/figures"
-doc="$here/docs/stability.md"
+doc="$here/docs/verification/stability.md"
 csv="$figures/stability.csv"
 
 command -v jq >/dev/null || { echo "stability-study.sh: jq is required to read summary.json" >&2; exit 1; }

@@ -4,7 +4,7 @@
 // so they follow whatever storage the kernels use. Memory the Body's public arrays do
 // not show (the kd-tree inside RKApproximation, the sparse LU of EssentialBC, vector
 // slack beyond size()) is not in the footprint; the scaling study's peak-RSS column
-// catches it. docs/performance.md lists the arrays of each category.
+// catches it. docs/verification/performance.md lists the arrays of each category.
 #pragma once
 
 #include "rkpm/sim/world.hpp"

@@ -1,7 +1,7 @@
 // rkpm_scaling: particle-count scaling of set-up, step time and memory for three
 // geometries (Mooney-Rivlin block, LCE sphere, RBC shell), with the machine's
 // streaming bandwidth as the bound of the internal-force step. Run by
-// scripts/scaling-study.sh; docs/performance.md explains every column.
+// scripts/scaling-study.sh; docs/verification/performance.md explains every column.
 //
 // The study re-runs this program for each size (--child) and for the triad
 // (--triad-only); those modes print one machine-readable line on stdout.
@@ -44,7 +44,7 @@ int run_child(const std::string& geometry, int resolution, const scaling::Measur
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Particle-count scaling study: set-up, step time, memory and bandwidth (docs/performance.md)"};
+  CLI::App app{"Particle-count scaling study: set-up, step time, memory and bandwidth (docs/verification/performance.md)"};
   scaling::StudySettings study;
   std::string csv_path = "perf-scaling.csv", markdown_path = "perf-scaling.md";
   std::string command = "bash scripts/scaling-study.sh";

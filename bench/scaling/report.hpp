@@ -1,5 +1,5 @@
 // The study's outputs: a CSV with every measured number (docs/figures/perf-scaling.csv)
-// and the markdown tables and target list of docs/performance.md.
+// and the markdown tables and target list of docs/verification/performance.md.
 #pragma once
 
 #include "study.hpp"

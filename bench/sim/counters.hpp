@@ -1,5 +1,5 @@
 // The counters every step benchmark reports (rates per second of wall time, all
-// threads together; docs/performance.md defines them):
+// threads together; docs/verification/performance.md defines them):
 //   particles           particles the benchmarked operation covers;
 //   particle_steps      particles advanced (or evaluated) per second;
 //   pair_updates        operator entries (or particle pairs) processed per second;

@@ -11,7 +11,7 @@ Evans-Fung disc scaled to the same area as the start (and to the same diameter).
 With wall thicknesses T [um] as arguments it also prints the map between the mid-surfaces
 of a wall of thickness T: the spheroid with semi-axes reduced by T / 2, and Evans-Fung
 offset inward along its normal by T / 2, scaled so the two mid-surfaces have the same
-area (docs/rbc.md, "What the 0.75 um wall lacks").
+area (docs/verification/rbc.md, "What the 0.75 um wall lacks").
 Usage: python3 examples/rbc/growth_map.py [T_um ...]   (standard library only)
 """
 import math

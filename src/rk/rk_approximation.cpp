@@ -238,7 +238,7 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
     // Ellipsoids: the grid's rows (rk/ellipsoid_grid.hpp), tested in the order it
     // stores them, from contiguous arrays. A refined thin wall's ball holds several
     // times the particles its supports can reach; on the 1e6-particle RBC shell the
-    // set-up took 28 s this way against 49 s through the tree (docs/performance.md).
+    // set-up took 28 s this way against 49 s through the tree (docs/verification/performance.md).
     grid_.ranges(centre, reach, ball, out.ranges);
     std::size_t visited = 0;
     for (const auto& range : out.ranges) visited += range.second - range.first;

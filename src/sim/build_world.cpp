@@ -357,7 +357,7 @@ void check_distributable_terms(const scene::Scene& scene, const World& world) {
       const auto& term = scene.terms[k].params;
       throw SetupError(fmt::format("{}:{}: [[term]] type = \"{}\" does not run on more than one rank yet (this run "
                                    "has {}); run the scene as one process (without mpirun), or see "
-                                   "docs/adding-a-term.md for what a term needs to run distributed",
+                                   "docs/development/adding-a-term.md for what a term needs to run distributed",
                                    term.file(), term.table_line(), scene.terms[k].type(), world.comm->size()));
     }
 }

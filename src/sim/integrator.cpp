@@ -408,7 +408,7 @@ void Integrator::check(double kinetic_of_motion) {
 
 // The stable step follows the state (stiffening, contact): it is re-estimated every
 // stable_step_interval steps (10 by default; 1 for releases from large strain,
-// docs/stability.md). Three cases: a user step is kept while it stays below the
+// docs/verification/stability.md). Three cases: a user step is kept while it stays below the
 // estimate (as at the start) and, once clamped, the run follows the automatic step; a dynamic run (or a
 // clamped one) takes the automatic step; FIRE grows its step by itself, up to the
 // automatic step as a ceiling.
@@ -436,7 +436,7 @@ void Integrator::step_size_policy() {
 
 // A release from a large strain accelerates particles so hard that they cross their
 // neighbours within one step at the stable step, which is a bound for small motions
-// (docs/stability.md). Per particle, the step of the displacement |v| dt + |a| dt^2 / 2
+// (docs/verification/stability.md). Per particle, the step of the displacement |v| dt + |a| dt^2 / 2
 // = kappa h is the positive root 2 kappa h / (|v| + sqrt(|v|^2 + 2 |a| kappa h)); the
 // smallest over the particles, evaluated every step, because the motion changes faster
 // than the material's stiffness.
@@ -466,7 +466,7 @@ double Integrator::mode_step_limit() const {
 // or stops them: a FIRE stop (P <= 0) zeroes every velocity, and measured after it the
 // kinetic criterion would hold at every stop, so a run creeping along a soft mode would
 // be declared converged at the first stop where the residual happens to be below its
-// tolerance (docs/relaxation.md, "Where the default run stopped").
+// tolerance (docs/verification/relaxation.md, "Where the default run stopped").
 void Integrator::update_convergence(double kinetic_of_motion) {
   double residual = 0.0;
   for (std::size_t k = 0; k < world_.bodies.size(); ++k) {

@@ -22,7 +22,7 @@ namespace {
 // finer cloud a smoothed copy of the coarser field: on the red-blood-cell scene that
 // copy missed the field by 5.6 % of the largest displacement, moved the enclosed volume
 // by 0.8 % and the contact gaps with it, and the finer cloud spent thousands of steps
-// re-equilibrating (docs/relaxation.md, "The transfer keeps the shape"). Richardson's
+// re-equilibrating (docs/verification/relaxation.md, "The transfer keeps the shape"). Richardson's
 // iteration d <- d + (target - N d) works because N is a sampled smoothing kernel that
 // reproduces linear fields: the smooth part of the mismatch, which moves the shape,
 // goes within a few sweeps (its eigenvalues of N are near 1); the rough part, which the

@@ -28,9 +28,9 @@ constexpr double kPi = 3.14159265358979323846;
 // director arrays of an LCE body (h, h0, rate, F_start, grad_h, flux, divergence) and the
 // force pass's per-thread buffers. Rounded up from the peaks measured at 1e6 particles
 // beyond the operators when the state held more (block 678, sphere 933, RBC shell
-// 1,235 bytes per particle, docs/performance.md), plus the 444 bytes per particle that
+// 1,235 bytes per particle, docs/verification/performance.md), plus the 444 bytes per particle that
 // the volume constraint's copy of its rows in particle order added on the RBC shell
-// (measured at 122,890 particles; docs/relaxation.md); kept as a margin.
+// (measured at 122,890 particles; docs/verification/relaxation.md); kept as a margin.
 constexpr double kStateBytes = 1750.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
 // column and a vector of 24 bytes (double storage) or 12 (float), built in blocks that

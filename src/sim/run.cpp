@@ -111,7 +111,7 @@ io::Json energy_json(const EnergyLedger& e) {
 
 // The relaxation's two criteria on the progress line: a run whose residual is already
 // below its target keeps going while the kinetic energy is not (a shape still creeping
-// along a soft mode, docs/relaxation.md), and the line says which one it waits for.
+// along a soft mode, docs/verification/relaxation.md), and the line says which one it waits for.
 std::string relax_progress(const Integrator& integrator, const IntegratorSettings& settings) {
   std::string line = fmt::format("residual {:.2e} (target {:.0e}), kinetic {:.1e} (target {:.0e})",
                                  integrator.residual(), settings.relax_force_tol, integrator.kinetic_measure(),

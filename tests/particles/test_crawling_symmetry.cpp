@@ -1,4 +1,4 @@
-// The crawling study's uniform control (docs/crawling.md) must not drift: its
+// The crawling study's uniform control (docs/verification/crawling.md) must not drift: its
 // substrate and loading are symmetric under x -> -x and y -> -y about the cell's
 // axis, so its clouds must be too. These tests build the cell and the block as
 // examples/crawling/crawling.toml declares them (and at the study's coarse

@@ -207,7 +207,7 @@ void expect_evans_fung_disc(const Relaxed& r, double largest_diameter_ratio = 0.
 
 // The route of examples/rbc/rbc.toml: the scene relaxed first on a coarser copy of
 // itself (face_cells 9), its state carried to the shell (nested iteration). Before the
-// middle layer carried half of each half-wall activity (docs/rbc.md), a level at
+// middle layer carried half of each half-wall activity (docs/verification/rbc.md), a level at
 // face_cells 6 led this shell to another, deeper rest state (h_min/h_max 0.385 against
 // 0.439 from the reference state): the coarsest level must still hold the disc.
 const char* const kNestedLevels = "[0.75]";
@@ -259,10 +259,10 @@ double relative_difference(const std::vector<rkpm::Vec3>& a, const std::vector<r
 // The scene's route ends in the disc, and at rest: the director is carried by the wall
 // (mobility = 0), and the run continued from its stop with ten times tighter criteria
 // moves by 8.7e-7 of the largest displacement (7.4e-4 before the middle layer carried
-// half of each half-wall activity, docs/rbc.md; the bound for the same equilibrium is
+// half of each half-wall activity, docs/verification/rbc.md; the bound for the same equilibrium is
 // 1e-3). With the director relaxing (mobility =
 // 1e3) and plain FIRE this shell's stop was 1.4e-2 from its rest, and the default
-// cloud's faces crept apart long after the scene's stop (docs/relaxation.md, "The
+// cloud's faces crept apart long after the scene's stop (docs/verification/relaxation.md, "The
 // director carried by the wall").
 // The Newton-Krylov finish (relax_finish = "newton_krylov") from there drives the
 // residual to 1e-9 mu, 1e5 times below the scene's criterion, in a few Newton steps
@@ -300,7 +300,7 @@ TEST(RedBloodCell, ActiveWallWithWaterLossTurnsTheShellIntoAnEvansFungDiscAtRest
 // with the director relaxing, mobility = 1e3: 0.43 here, 0.49 without the scaling)
 // and the rim's amplitude falls to 0.67 of the 0.5 um wall's (zeta_rim_fold_share).
 // This thin coarse wall shrinks least: D 9.70 um from 10 um since the middle layer
-// carries half of each half-wall activity (docs/rbc.md, "The wall's middle layer";
+// carries half of each half-wall activity (docs/verification/rbc.md, "The wall's middle layer";
 // before, 0.97 held), hence 0.98.
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
   constexpr double seed_wall_thickness = 0.3e-6;  // [m]
@@ -316,11 +316,11 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
 // A wall 1.5 times the seed's T with the same driver keys: zeta_rim_fold_share doubles
 // the rim's activity to hold the thicker wall's fold open. Measured: h_min/h_max 0.470,
 // RMS 3.93 % of D, D 9.48 um from 10 um (before the middle layer carried half of each
-// half-wall activity, docs/rbc.md: 0.485, 4.26 %, D 9.80 um, the thick wall shrinking
+// half-wall activity, docs/verification/rbc.md: 0.485, 4.26 %, D 9.80 um, the thick wall shrinking
 // least: hence 0.99). Before that fix, without the share (zeta_rim_fold_share = 0) the
 // same shell ended at 0.543, RMS 6.3 %, D 10.16 um: not biconcave. Plain FIRE from the start: through the nested
 // level at face_cells 9 this thick coarse wall ends just outside the criteria (RMS
-// 5.06 %, D 9.94 um), where the 30,730-particle scene's levels hold it (docs/rbc.md).
+// 5.06 %, D 9.94 um), where the 30,730-particle scene's levels hold it (docs/verification/rbc.md).
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
   const Relaxed r = relax(coarse_scene(kDriver, 0.9, 0.75e-6));
   std::printf("coarse RBC at 0.75 um: h_min/h_max %.4f, RMS against Evans-Fung %.4f of D, D %.3e m\n",
@@ -331,13 +331,13 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
 // Plain FIRE from the reference state comes to rest in a neighbouring state, not the
 // same one: the two rest states are 3.2e-2 of the largest displacement apart (rigid
 // motion removed; 5.5e-2 before the middle layer carried half of each half-wall
-// activity, docs/rbc.md), and each stays where it is under ten times tighter criteria.
+// activity, docs/verification/rbc.md), and each stays where it is under ten times tighter criteria.
 // Both are biconcave by the scene's criteria with the same shape to 1e-4 in h_min/h_max
 // (0.3414 and 0.3415; 0.4366 and 0.4397 before) and 1e-4 of D in RMS against Evans-Fung
-// (3.39 and 3.40 %); how close within the family depends on the path (docs/relaxation.md).
+// (3.39 and 3.40 %); how close within the family depends on the path (docs/verification/relaxation.md).
 // The bounds would catch a route that lands on another branch: before the fix, with a
 // coarse level at face_cells 6, the route ended at h_min/h_max 0.385 against 0.439,
-// 9.4e-2 apart (docs/relaxation.md, "Which rest state a route reaches").
+// 9.4e-2 apart (docs/verification/relaxation.md, "Which rest state a route reaches").
 // The Newton-Krylov finish from each stop confirms it: both end at a residual below
 // 1e-9 mu, 3.23e-2 apart, in the same shape (h_min/h_max 0.3414 and 0.3415): two exact
 // rest states.
@@ -365,7 +365,7 @@ TEST(RedBloodCell, PlainFireFromTheStartRestsInTheSameShape) {
               route.newton_final.h_min / route.newton_final.h_max, plain.newton_final.h_min / plain.newton_final.h_max);
   EXPECT_LT(route.newton.residual, 1e-9);
   EXPECT_LT(plain.newton.residual, 1e-9);
-  EXPECT_GT(exact_apart, 1e-2) << "the two rest states met: docs/relaxation.md says they are two";
+  EXPECT_GT(exact_apart, 1e-2) << "the two rest states met: docs/verification/relaxation.md says they are two";
   EXPECT_NEAR(route.newton_final.h_min / route.newton_final.h_max,
               plain.newton_final.h_min / plain.newton_final.h_max, 5e-3);
 }

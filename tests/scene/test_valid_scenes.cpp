@@ -247,8 +247,8 @@ TEST_F(SceneOnDisk, SyntaxErrorNamesFileAndLine) {
 // The complete example scenes of the format documentation (the blocks that start
 // with [scene] and declare a body) must stay valid.
 TEST(ValidScene, DocumentationExamplesLoad) {
-  std::ifstream in(std::string(RKPM_SOURCE_DIR) + "/docs/scene-format.md");
-  ASSERT_TRUE(in) << "docs/scene-format.md not found";
+  std::ifstream in(std::string(RKPM_SOURCE_DIR) + "/docs/guide/scenes.md");
+  ASSERT_TRUE(in) << "docs/guide/scenes.md not found";
   std::vector<std::string> complete;
   std::string line, block;
   bool inside = false;

@@ -1,4 +1,4 @@
-// The relaxation accelerators of docs/relaxation.md: nested iteration (the scene at a
+// The relaxation accelerators of docs/verification/relaxation.md: nested iteration (the scene at a
 // coarser resolution, the state carried to the finer cloud by the RK approximation),
 // mass scaling and FIRE 2.0. Each must reach the same equilibrium as plain FIRE: the
 // masses, the starting point and the velocity control of a static problem change the

@@ -1,4 +1,4 @@
-// Releases from large strain (docs/stability.md): the stability study's free
+// Releases from large strain (docs/verification/stability.md): the stability study's free
 // Mooney-Rivlin block (6^3 cells, lambda / c1 = 10, undamped) let go from stretch 3 or
 // compression 0.3 along x. At the default schedule (the stable step re-estimated every
 // 10 steps) the state changes faster than the step follows and the run blew up after
@@ -6,7 +6,7 @@
 // with `stable_step_interval = 1` it runs to its end with the energy ledger balanced.
 // Damped (mass-proportional, 3e6 / s, ten times an estimate of the block's slowest
 // angular frequency, pi c_s / L ~ 3e5 rad/s with c_s = 1 m/s; 1e6 / s does not hold the
-// compression in all directions, docs/stability.md) with the step estimated every step,
+// compression in all directions, docs/verification/stability.md) with the step estimated every step,
 // the releases along x and in all directions come to rest in the stress-free state.
 #include "sim_fixtures.hpp"
 

@@ -3,7 +3,7 @@
 // Why: a floating-point sum depends on the order of its terms, and that order changes
 // with the thread count and with how the particles are split over the ranks. A
 // relaxation carries such round-off differences along its soft modes for thousands of
-// steps (docs/distributed.md), so the global sums that steer it (FIRE's P = F.v, |v|,
+// steps (docs/verification/distributed.md), so the global sums that steer it (FIRE's P = F.v, |v|,
 // |F|, the enclosed volume, energies) are accumulated exactly here: every double is a
 // 53-bit integer times a power of two, and it is added into a fixed-point number that
 // spans the whole double range (2,098 bits in 32-bit digits held in 64-bit words, so a

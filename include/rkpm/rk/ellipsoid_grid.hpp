@@ -18,7 +18,7 @@
 // coordinate axis it is as narrow as the supports across the others; on the RBC shell
 // the layers' edges follow the cubed sphere's unit directions, up to about 40 degrees
 // from the wall's normal, and the box is about the ball's. What the grid gains there
-// (docs/performance.md: the 1e6-particle shell's set-up 49 -> 28 s, with the caller's
+// (docs/verification/performance.md: the 1e6-particle shell's set-up 49 -> 28 s, with the caller's
 // branch-free filter) is its layout: the particles are sorted by bucket (side s, C a
 // multiple of s), one row of buckets along x is one contiguous range, and the supports' metrics and smallest semi-axes are
 // copied in that order, so the test over a range streams contiguous arrays (the

@@ -41,7 +41,7 @@ enum class Integration { SCNI, Direct };
 // either). Corners: the shape functions at the triangle's corners, a third of the area
 // each; the corners (edge midpoints, face and element centroids) are shared by up to
 // eight cells, so a hexahedral cloud costs about 7 evaluations per particle. Centroids:
-// at the triangle's centroid, about 24 per particle. docs/convergence.md compares them.
+// at the triangle's centroid, about 24 per particle. docs/verification/convergence.md compares them.
 enum class FacetRule { Corners, Centroids };
 
 // The transpose of a compressed-row pattern as index lists: for column I, the entries

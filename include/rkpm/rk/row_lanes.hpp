@@ -24,9 +24,9 @@
 //
 // Summing across lanes (lane l takes entries l, l + 4, ...) would shorten the gather's
 // dependency chains, but changes F by round-off and with it the path of a relaxation
-// (docs/relaxation.md, "Round-off moves the path"). Measured at 1e5 particles with the
+// (docs/verification/relaxation.md, "Round-off moves the path"). Measured at 1e5 particles with the
 // vector scatter, it was 5-9 % faster than the kept forms in the native build and
-// 3-7 % slower in the portable one (docs/performance.md).
+// 3-7 % slower in the portable one (docs/verification/performance.md).
 #pragma once
 
 #include "rkpm/common/types.hpp"
@@ -38,7 +38,7 @@ namespace rkpm::rk::lanes {
 
 // Whether the target has whole 4-double registers. Without them (the portable SSE2
 // build) each 4-lane operation is two instructions, and the scalar form measured
-// faster (docs/performance.md), so the force pass takes it there. Both forms give the
+// faster (docs/verification/performance.md), so the force pass takes it there. Both forms give the
 // same bits, so translation units built for different targets agree.
 #ifdef __AVX__
 inline constexpr bool kVectorRows = true;
@@ -64,7 +64,7 @@ inline Doubles widen(const float* p) {
 // sum): (M_i0 b_0 + M_i1 b_1) + M_i2 b_2 for i = 0, 1, and
 // M_20 b_0 + (M_21 b_1 + M_22 b_2). The force pass formed w (M b) with Eigen before
 // these kernels, which evaluates it as (w M) b, and a relaxation's path follows the
-// round-off (docs/relaxation.md, "Round-off moves the path"), so the kernels keep those
+// round-off (docs/verification/relaxation.md, "Round-off moves the path"), so the kernels keep those
 // bits. T is double or Doubles (four entries at once).
 template <class T>
 void product(const T m[3][3], const T& b0, const T& b1, const T& b2, T out[3]) {

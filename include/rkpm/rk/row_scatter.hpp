@@ -6,7 +6,7 @@
 // every entry of b_I(X_L) a second time per step, through an index indirection, in an
 // order unrelated to how the entries are stored. As a scatter from row L it reuses the
 // row the deformation gradient F_L has just read: the operator streams through memory
-// once per step (see docs/performance.md).
+// once per step (see docs/verification/performance.md).
 //
 // Why no race: each thread owns a fixed contiguous block of rows (the same split every
 // step) and adds into a buffer of its own; only the columns its rows touch are zeroed

@@ -1,5 +1,5 @@
 // The same scene on a coarser (or finer) particle cloud: the levels of nested
-// iteration (docs/relaxation.md).
+// iteration (docs/verification/relaxation.md).
 #pragma once
 
 #include "rkpm/scene/scene.hpp"

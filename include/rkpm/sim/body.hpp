@@ -40,7 +40,7 @@ struct VariantAfterVoid {
 
 // What a body holds of its constitutive model: one alternative per model of the
 // material catalog (src/materials/catalog.def), each materials::<model>::BodyMaterial.
-// Every alternative has the same interface (docs/materials.md), so the per-step
+// Every alternative has the same interface (docs/theory/materials.md), so the per-step
 // functions below dispatch once per body with std::visit and call the model's inline
 // kernel per point: no virtual call per particle.
 //   static constexpr bool needs_director;  the body carries a DirectorField

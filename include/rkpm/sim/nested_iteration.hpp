@@ -1,4 +1,4 @@
-// Nested iteration for relaxation (docs/relaxation.md): the scene is relaxed on
+// Nested iteration for relaxation (docs/verification/relaxation.md): the scene is relaxed on
 // coarser clouds first, each level warm-starting the next, so that the fine cloud
 // starts near its equilibrium and its own relaxation only has to settle what the
 // coarse clouds could not resolve.

@@ -1,7 +1,7 @@
 // Static equilibrium by an inexact Newton method whose linear systems are solved by
 // GMRES with the Jacobian applied as a difference of two force evaluations
 // (Jacobian-free Newton-Krylov, Knoll & Keyes 2004): the relaxation's `relax_finish =
-// "newton_krylov"` (docs/relaxation.md, "Newton-Krylov"). It solves f(d) = 0 for the
+// "newton_krylov"` (docs/verification/relaxation.md, "Newton-Krylov"). It solves f(d) = 0 for the
 // free generalized displacements of every body, f the force after the essential
 // conditions' transformation. A director is not an unknown of its own: in every
 // evaluation the caller carries it from the Newton step's base state to the evaluated

@@ -7,7 +7,7 @@
 // (n+1)^3; shell: layers (6 n^2 + 2)) and read from the file's NumberOfPoints for an
 // imported .vtu. The operator entries are a model of the row lengths: the particles
 // whose support (radius `support` times the longest edge) covers a point, counted in the
-// ball of that radius clipped to the body's extent (docs/performance.md compares it with
+// ball of that radius clipped to the body's extent (docs/verification/performance.md compares it with
 // built operators). Memory is the operators at their set-up peak (rows built as lists,
 // then flattened) plus the per-particle state; a frame is counted uncompressed, an upper
 // bound of what the zlib-compressed .vtu takes.

@@ -49,7 +49,7 @@ std::vector<int> edge_depth(const particles::Cloud& cloud, const std::vector<std
 // semi-axes shrink by the same length, not offset surfaces, and the surfaces' particles
 // sit an in-plane spacing apart, so the RBC scene's middle layer lay 0.46-0.54 of the
 // way through the wall and an exact-tie test gave 1/2 to 130 of its 6,146 particles, the
-// rest wholly to one half (docs/rbc.md, "The wall's middle layer").
+// rest wholly to one half (docs/verification/rbc.md, "The wall's middle layer").
 std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& surface) {
   const std::string other = surface == "inner" ? "outer" : "inner";
   std::vector<std::vector<Index>> neighbours(cloud.size());
@@ -120,7 +120,7 @@ void apply_layer(const particles::Cloud& cloud, const std::string& layer, double
 // wall's thickness T, and it holds the wall's tight equatorial fold open against the
 // wall's bending stiffness, which grows as T^3. f is the second job's share at T_ref.
 // Not derived: the 0.3-0.75 um walls of the RBC scene ask for a rim that is flat up to
-// T_ref and doubles by 1.5 T_ref, which a pure power of T does not give (docs/rbc.md).
+// T_ref and doubles by 1.5 T_ref, which a pure power of T does not give (docs/verification/rbc.md).
 double rim_thickness_factor(const Settings& settings, const scene::ParamSet& m, double thickness_ratio) {
   const double share = settings.zeta_rim_fold_share;
   if (share == 0.0) return 1.0;

@@ -213,7 +213,7 @@ struct LiquidCrystalElastomer {
   Vec3 equilibrium_director(const Mat3& F, const Vec3& h0) const;
 
   // Conservative longitudinal wave speed [m/s] in the reference configuration
-  // (rho0 = reference density [kg/m^3]); see docs/materials.md. With a = N.l0 N,
+  // (rho0 = reference density [kg/m^3]); see docs/theory/materials.md. With a = N.l0 N,
   // b = F^-T N, the acoustic tensor satisfies, for unit m and N,
   //   m.Q(N) m = mu (N.l0 N)(m.l^-1 m) + (mu + K - K ln J)(b.m)^2 + 2 kf J |G m|^2 |b|^2
   //            <= N.[ mu lmax(l^-1) l0 + (max(0, mu + K - K ln J) + 2 kf J |G|^2) C^-1 ] N,

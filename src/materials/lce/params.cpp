@@ -30,7 +30,7 @@ const scene::SettingsTable<Settings>& settings_table() {
                 ParamSpec::real("mobility", "1/(Pa s)").at_least(0).defaults(0.0)
                   .help("Allen-Cahn mobility L of the director relaxation (Eq. 5-6); 0 = the director follows the body rotation only. "
                       "The step stays below 2 / (L times the director's stiffness), so a high L shortens it "
-                      "(docs/stability.md)."))
+                      "(docs/verification/stability.md)."))
           .bind(&Settings::zeta,
                 ParamSpec::real("zeta", "Pa").defaults(0.0)
                   .help("Activity zeta of the active stress -zeta h x h (Eq. 1). zeta < 0 contracts the material "
@@ -79,7 +79,7 @@ const scene::SettingsTable<Settings>& settings_table() {
                         "wall's bending stiffness (~T^3): zeta_rim is multiplied by (1 - f) + f (T / T_ref)^3, so a "
                         "thicker wall gets a stronger rim to hold its equatorial fold open and a thinner one a weaker "
                         "rim. 0 = zeta_rim at any thickness. Needs zeta_reference_thickness > 0. The default scene's "
-                        "0.421 is fitted to the 0.75 um wall (docs/rbc.md)."))
+                        "0.421 is fitted to the 0.75 um wall (docs/verification/rbc.md)."))
           .bind(&Settings::zeta_axis,
                 ParamSpec::vec3("zeta_axis", "-").defaults(Vec3(0.0, 0.0, 1.0))
                   .help("Axis a of the axial activity profile (normalised; must be non-zero)."));

@@ -70,7 +70,7 @@ struct MooneyRivlin {
   // spacing by it), rho0 = reference density [kg/m^3].
   //
   // The acoustic tensor Q(N)_ik = dP_iJ/dF_kL N_J N_L of this energy is, with
-  // a = F N, b = F^-T N (derivation in docs/materials.md):
+  // a = F N, b = F^-T N (derivation in docs/theory/materials.md):
   //   Q = 2 (c1 + c2 (I1 - |a|^2)) I + 2 c2 (a a^T - B) + 2 (p - J p') b b^T,
   //   p(J) = c1 J^(2/3) + 2 c2 J^(4/3) - 2 lambda ln J.
   // a a^T - B is negative semidefinite, |a|^2 = N.C N and |b|^2 = N.C^-1 N, so

@@ -54,7 +54,7 @@ struct NeoHookean {
   // Longitudinal wave speed [m/s] for the stable time step, in the reference
   // configuration (divide the reference particle spacing by it), rho0 = reference
   // density [kg/m^3]. The acoustic tensor of this energy is, with b = F^-T N
-  // (derivation in docs/materials.md),
+  // (derivation in docs/theory/materials.md),
   //   Q(N) = mu I + (mu + lambda - lambda ln J) b b^T,
   // so its largest eigenvalue over unit m and N is
   //   rho0 c^2 = mu + max(0, mu + lambda - lambda ln J) / C_min,

@@ -59,7 +59,7 @@ ParamTable rk_section() {
                 "entry; every sum stays in double and F is formed from relative displacements, so a body "
                 "at rest has F = I exactly and a linear field is reproduced to the float round-off, "
                 "about 1e-7) or double (28 bytes). The default is float: the convergence study's errors "
-                "agree with double storage to four digits (docs/performance.md)."),
+                "agree with double storage to four digits (docs/verification/performance.md)."),
       ParamSpec::choice("basis", {"linear", "quadratic"}).defaults(std::string("linear"))
           .help("Polynomial basis the shape functions reproduce exactly."),
       ParamSpec::choice("integration", {"scni", "direct"}).defaults(std::string("scni"))
@@ -72,7 +72,7 @@ ParamTable rk_section() {
                 "midpoints, face and element centroids) are shared by up to eight cells, so a hexahedral "
                 "cloud costs about 7 evaluations per particle (the set-up's largest part). centroids: at "
                 "each triangle's centroid, about 24 per particle; slightly lower energy error, higher L2 "
-                "error (docs/convergence.md)."),
+                "error (docs/verification/convergence.md)."),
       ParamSpec::real("stabilization", "-").at_least(0).at_most(10).defaults(0.1)
           .help("Coefficient alpha of the interpolation-residual stabilization, which removes the "
                 "spurious low-energy modes of nodal integration and leaves linear fields and rigid "

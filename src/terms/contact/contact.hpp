@@ -26,7 +26,7 @@
 // unchanged and makes the energy continuous when a pair crosses the cutoff, so the
 // stored energy stays consistent with the work of the forces (an unshifted energy
 // jumps by n n w phi(cutoff) at every crossing). The forces are those of the
-// truncated potential; docs/contact.md gives the resulting half-space traction law
+// truncated potential; docs/theory/contact.md gives the resulting half-space traction law
 // and its deviation from the untruncated one.
 // Pairs come from a Verlet list with a skin (contact_pairs.hpp).
 //

@@ -37,7 +37,7 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   // The surface's quadrature is needed only here. It is built and folded in batches of
   // boundary particles, so that its shape functions (several times the folded rows) are
   // never held for the whole surface: at 1e6 particles of the RBC shell they were the
-  // peak of the set-up's memory (docs/performance.md).
+  // peak of the set-up's memory (docs/verification/performance.md).
   constexpr std::size_t batch = 8192;
   Fold fold{std::vector<Vec3>(body.size(), Vec3::Zero()), std::vector<char>(body.size(), 0), {}};
   row_offset_.push_back(0);

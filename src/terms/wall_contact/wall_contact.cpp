@@ -41,7 +41,7 @@ WallContact::WallContact(Body& body, const WallContactSettings& settings)
       exclusion2_(settings.exclusion * settings.exclusion),
       // Excluded pairs (neighbours in the reference wall) never interact: they are not
       // stored. At 1e6 particles of the RBC shell they were nearly all of the 82 million
-      // listed pairs, 1.3 GB (docs/performance.md). Only the rows are read.
+      // listed pairs, 1.3 GB (docs/verification/performance.md). Only the rows are read.
       pairs_(settings.distance, settings.skin, [this](Index i, Index j) { return !excluded(i, j); }, false) {
   const std::uint32_t bit = body.cloud.surface_bit(surface_);
   if (bit == 0u)

@@ -112,7 +112,7 @@ TEST(LceHomogeneous, SoftElasticPlateauAcrossTheDirector) {
 TEST(LceHomogeneous, PlateauIsIndependentOfTheClampingButTheAngleIsNot) {
   // With F12 free instead of F21 the incompressible zero-energy state has
   // F = [[1/l, g], [0, l]], g^2 = (l^2 - 1)(s - l^2)/l^2, and the director
-  // angle sin^2 theta = (l^2 - 1)/(s - 1) (derived in docs/materials.md).
+  // angle sin^2 theta = (l^2 - 1)/(s - 1) (derived in docs/theory/materials.md).
   const double s = 2.0;
   const auto m = nearly_incompressible(s);
   for (const double l : {1.1, 1.3}) {
@@ -141,7 +141,7 @@ TEST(LceHomogeneous, BeyondThePlateauNominalStressFollowsClosedForm) {
 }
 
 // Free body, director fixed along h = h0 = e1, active stress only; F = diag(l, t, t).
-// Total Cauchy stress zero <=> (compressible extension, derived in docs/materials.md)
+// Total Cauchy stress zero <=> (compressible extension, derived in docs/theory/materials.md)
 //   sigma_11: mu (l^2 - t^2) / J = zeta,   sigma_22: K ln J = mu (1 - t^2),   J = l t^2,
 // and in the incompressible limit l^2 - 1/l = zeta / mu.
 struct ActiveStretch {

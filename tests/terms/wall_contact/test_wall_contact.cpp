@@ -103,7 +103,7 @@ TEST(WallContact, ReferenceShellCarriesNoContactForce) {
 
 // Two facing walls at gap d: the pressure of each particle of the top sheet (its contact
 // force over its area) against the continuum law p(d) = 2 pi p0 (d/s0) w(d/s0) of
-// docs/contact.md. The shell (surface spacing 0.2 um, s0 = 0.8 um, so each particle
+// docs/theory/contact.md. The shell (surface spacing 0.2 um, s0 = 0.8 um, so each particle
 // feels about 10 of the other wall) is squeezed until its inner sheets are 0.9 s0 apart
 // on the axis; near the axis they are flat and parallel.
 TEST(WallContact, FlatWallsPressWithTheContinuumLaw) {
