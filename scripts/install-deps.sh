@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages rkpm needs to build, test and plot (as root).
+# Usage: scripts/install-deps.sh [--fuzz]
 # ParaView's Python and Xvfb, for the pictures, conflict with libvtk9-dev: they are
 # installed and removed again by scripts/render-pictures.sh around its rendering.
 # Every dependency is a Debian package: nothing is downloaded at build time.
 #   install-deps.sh          the build, the tests, the benchmarks and the plots
-#   install-deps.sh --fuzz   also clang and libFuzzer for scripts/fuzz.sh (the
+#   install-deps.sh --fuzz   also clang and libFuzzer for scripts/study fuzz (the
 #                            normal build does not need them)
 set -euo pipefail
 
 fuzz=0
 for arg in "$@"; do
   case "$arg" in
+    -h | --help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     --fuzz) fuzz=1 ;;
     *) echo "install-deps: unknown option $arg (expected --fuzz)" >&2; exit 2 ;;
   esac
@@ -30,6 +32,7 @@ packages=(
   libgtest-dev                     # GoogleTest: the test suite
   libbenchmark-dev                 # Google Benchmark: bench/
   gnuplot-nox                      # PNG plots of the studies
+  python3 jq                       # the studies' tables (summary.json, history.csv)
 )
 if [ "$fuzz" = 1 ]; then
   packages+=(

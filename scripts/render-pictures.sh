@@ -5,30 +5,33 @@
 #                OUT_DIR/spread_cell (default out/)
 #   PICTURE_DIR  where the PNGs go (default docs/figures/pictures)
 #   --run        first run the example scenes whose runs are missing with
-#                build/src/app/rkpm (on 2 cores: rbc 3-4 min, adhesion 70 s,
+#                the build's rkpm (on 2 cores: rbc 3-4 min, adhesion 70 s,
 #                crawling 50 s, spread_cell 15 s)
 #   --check      the CI check: run spread_cell only, render it, fail on a blank picture
 # Debian's python3-paraview conflicts with libvtk9-dev, the build dependency: when
 # pvbatch is missing, this installs ParaView and a virtual X display (Xvfb), renders,
 # then removes ParaView and installs the build packages again (scripts/install-deps.sh).
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
+script_name=render-pictures.sh
+source "$(dirname "$0")/lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
 run=0 check=0 args=()
 for a in "$@"; do
   case "$a" in
     --run) run=1 ;;
     --check) check=1; run=1 ;;
+    -*) echo "render-pictures.sh: unknown option $a (expected --run or --check)" >&2; exit 2 ;;
     *) args+=("$a") ;;
   esac
 done
-out=${args[0]:-"$here/out"}
+out=${args[0]:-"$rkpm_out_root"}
 pictures=${args[1]:-"$here/docs/figures/pictures"}
 views=(rbc adhesion crawling spread_cell)
 [ "$check" = 1 ] && views=(spread_cell)
 
-rkpm="$here/build/src/app/rkpm"
 if [ "$run" = 1 ]; then
-  [ -x "$rkpm" ] || bash "$here/scripts/build.sh" "$here/build" rkpm
+  rkpm=$(rkpm_program)
   for v in "${views[@]}"; do
     scene="$here/examples/$v/$v.toml"
     [ -f "$out/$v/summary.json" ] || "$rkpm" run "$scene" --out "$out/$v" --quiet

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
-# README command (a): install what is missing, build the simulator (the rkpm program
-# only), run the main job (the red-blood-cell relaxation) and print where ParaView
-# should open its output.
+# README command (a): install what is missing, build the simulator, run the main job.
+# Builds the rkpm program only (the tests are command (b)), runs the red-blood-cell
+# relaxation (examples/rbc/rbc.toml) into out/rbc/ and prints where ParaView should
+# open its output.
 # Usage: scripts/run-main.sh [SCENE.toml] [rkpm run options...]
+#   SCENE.toml runs another scene instead, into out/<scene name>/.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-bash "$here/scripts/install-deps.sh"
-bash "$here/scripts/build.sh" "$here/build" rkpm  # the simulator only: the tests are command (b)
-scene=${1:-"$here/examples/rbc/rbc.toml"}
+script_name=run-main.sh
+source "$(dirname "$0")/lib/common.sh"
+rkpm_help_if_asked "$@"
+bash "$rkpm_root/scripts/install-deps.sh"
+rkpm=$(rkpm_program)
+scene=${1:-"$rkpm_root/examples/rbc/rbc.toml"}
 shift || true
-"$here/build/src/app/rkpm" run "$scene" --out "$here/out/$(basename "$scene" .toml)" "$@"
+"$rkpm" run "$scene" --out "$rkpm_out_root/$(basename "$scene" .toml)" "$@"

@@ -1,7 +1,7 @@
 // rkpm_scaling: particle-count scaling of set-up, step time and memory for three
 // geometries (Mooney-Rivlin block, LCE sphere, RBC shell), with the machine's
 // streaming bandwidth as the bound of the internal-force step. Run by
-// scripts/scaling-study.sh; docs/verification/performance.md explains every column.
+// `scripts/study scaling`; docs/verification/performance.md explains every column.
 //
 // The study re-runs this program for each size (--child) and for the triad
 // (--triad-only); those modes print one machine-readable line on stdout.
@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   CLI::App app{"Particle-count scaling study: set-up, step time, memory and bandwidth (docs/verification/performance.md)"};
   scaling::StudySettings study;
   std::string csv_path = "perf-scaling.csv", markdown_path = "perf-scaling.md";
-  std::string command = "bash scripts/scaling-study.sh";
+  std::string command = "scripts/study scaling";
   std::vector<std::string> geometries = {"block", "sphere", "shell"};
   double memory_limit_gb = study.memory_limit_bytes / 1e9;
   scaling::RbcRelaxation rbc;

@@ -1,21 +1,33 @@
 #!/usr/bin/env bash
-# Wall-thickness study of the red-blood-cell relaxation (examples/rbc/rbc.toml): the
-# scene as shipped with only [body.cloud] thickness changed, each run to convergence
-# (nested levels included); shape metrics against Evans-Fung, steps and wall time.
-# Writes OUT_DIR/{study.csv, table.md, profiles.png}.
-# Usage: bash scripts/thickness-study.sh [BUILD_DIR] [OUT_DIR] [THICKNESSES_UM...]
+# Red-blood-cell relaxation at several wall thicknesses: shape against Evans-Fung.
+# The scene (examples/rbc/rbc.toml) as shipped with only [body.cloud] thickness
+# changed, each run to convergence (nested levels included); shape metrics against
+# Evans-Fung, steps and wall time. Writes out/thickness/{study.csv, table.md,
+# profiles.png}; the default thicknesses also rewrite docs/figures/rbc-thickness-* and
+# the thickness table of docs/verification/rbc.md. About 5 minutes on 2 cores.
+# Usage: scripts/study thickness [--coarse] [THICKNESSES_UM...]
+#   --coarse: 0.3 and 0.5 um at face_cells 12 (about a minute); docs untouched.
 #   THICKNESSES_UM default 0.3 0.4 0.5 0.75 (the seed gives 0.5 and "about 0.3").
 #   RKPM_FACE_CELLS=N runs the shell at face_cells N instead of the scene's.
 #   A directory that already holds a summary.json is kept, so the study can be
 #   completed in several sittings.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-out=${2:-$here/thickness-study}
-shift $(( $# > 2 ? 2 : $# ))
-thicknesses=("$@")
-[ ${#thicknesses[@]} -eq 0 ] && thicknesses=(0.3 0.4 0.5 0.75)
+script_name="study thickness"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/thickness
+update_docs=0
+if [ "${1:-}" = --coarse ]; then
+  shift; thicknesses=(0.3 0.5); : "${RKPM_FACE_CELLS:=12}"
+elif [ $# -gt 0 ]; then
+  thicknesses=("$@")
+else
+  thicknesses=(0.3 0.4 0.5 0.75); [ -z "${RKPM_FACE_CELLS:-}" ] && update_docs=1
+fi
 threads=${OMP_NUM_THREADS:-2}
+rkpm_need gnuplot python3
+rkpm=$(rkpm_program)
 mkdir -p "$out"
 
 tags=()
@@ -27,14 +39,13 @@ for t in "${thicknesses[@]}"; do
       ${RKPM_FACE_CELLS:+-e "s/^face_cells = .*/face_cells = $RKPM_FACE_CELLS/"} \
       "$here/examples/rbc/rbc.toml" > "$out/$tag.toml"
   echo "$tag: running"
-  OMP_NUM_THREADS=$threads "$build/src/app/rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
+  OMP_NUM_THREADS=$threads "$rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
 done
 
 load=$(cut -d' ' -f1-3 /proc/loadavg)
-rev=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
-python3 - "$out" "$threads" "$load" "$rev" "${tags[@]}" <<'PY'
+python3 - "$out" "$threads" "$load" "${tags[@]}" <<'PY'
 import csv, json, sys
-out, threads, load, rev, tags = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
+out, threads, load, tags = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
 rows = []
 for tag in tags:
     try:
@@ -59,7 +70,7 @@ with open(f"{out}/study.csv", "w") as f:
     for r in rows:
         f.write(",".join(str(r[k]) for k in keys) + "\n")
 with open(f"{out}/table.md", "w") as f:
-    f.write(f"Measured by `bash scripts/thickness-study.sh` at {rev}, {threads} threads, load average after the "
+    f.write(f"Measured by `scripts/study thickness`, {threads} threads, load average after the "
             f"runs {load}. Criteria of the scene: h_min/h_max <= 0.5, r(h_max)/R in 0.55-0.85, RMS <= 5 % of D, "
             "up-down <= 5 %.\n\n")
     f.write("| T [um] | particles | steps (levels + own cloud) | wall [s] | converged | h_min/h_max | r(h_max)/R | "
@@ -104,3 +115,9 @@ set ylabel "thickness h(r) / D"
 $plot
 EOF
 echo "wrote $out/study.csv, $out/table.md, $out/profiles.png"
+if [ "$update_docs" = 1 ]; then
+  cp "$out/study.csv" "$here/docs/figures/rbc-thickness-study.csv"
+  cp "$out/profiles.png" "$here/docs/figures/rbc-thickness-profiles.png"
+  rkpm_replace_generated "$here/docs/verification/rbc.md" "$out/table.md" "scripts/study thickness -->"
+  echo "updated docs/figures/rbc-thickness-* and docs/verification/rbc.md"
+fi

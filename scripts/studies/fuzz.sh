@@ -1,21 +1,28 @@
 #!/usr/bin/env bash
-# Study command: fuzzes the scene loader and the .vtu importer with libFuzzer.
-# Usage: scripts/fuzz.sh [SECONDS]   (default 1800 per target; both run side by side)
+# libFuzzer on the scene loader and the .vtu importer; minimised corpus.
+# Usage: scripts/study fuzz [--coarse] [SECONDS]
+#   SECONDS per target, default 1800; both targets run side by side, one core each.
+#   --coarse: 60 s per target, and the report is not written into the docs.
 #
 # Installs clang and libFuzzer (install-deps.sh --fuzz), builds the two fuzz
-# programs with ASan and UBSan in build-fuzz/, runs each on one core from the seeds
-# and the committed corpus, minimises what they reached into tests/fuzz/corpus/,
-# and prints a report that also replaces the "Last run" section of docs/verification/fuzzing.md.
-# Inputs that crash, hang or exhaust memory are kept in build-fuzz/run/<target>/artifacts/.
-# Exits non-zero if a fuzzer found anything.
+# programs with ASan and UBSan in RKPM_BUILD_DIR-fuzz (build-fuzz/), runs each from
+# the seeds and the committed corpus, minimises what they reached into
+# tests/fuzz/corpus/, and prints a report that also replaces the "Last run" section of
+# docs/verification/fuzzing.md. Inputs that crash, hang or exhaust memory are kept in
+# out/fuzz/<target>/artifacts/. Exits non-zero if a fuzzer found anything.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-seconds=${1:-1800}
-case "$seconds" in '' | *[!0-9]*) echo "fuzz.sh: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2 ;; esac
+script_name="study fuzz"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+coarse=0
+if [ "${1:-}" = --coarse ]; then coarse=1; shift; fi
+seconds=${1:-$([ "$coarse" = 1 ] && echo 60 || echo 1800)}
+case "$seconds" in '' | *[!0-9]*) echo "$script_name: SECONDS must be a positive integer, got '$seconds'" >&2; exit 2 ;; esac
 
 bash "$here/scripts/install-deps.sh" --fuzz
 
-build="$here/build-fuzz"
+build="$rkpm_build_dir-fuzz"
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 echo "== Fuzz build (clang, ASan, UBSan, libFuzzer) in $build"
@@ -28,7 +35,7 @@ if [ -x "$symbolizer" ]; then export ASAN_SYMBOLIZER_PATH="$symbolizer"; fi
 export OMP_NUM_THREADS=1 OMP_WAIT_POLICY=passive
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 fuzz_dir="$here/tests/fuzz"
-run="$build/run"
+run="$rkpm_out_root/fuzz"
 # fuzz_vtu writes each input to a temporary file; a crashing worker leaves its file.
 mkdir -p "$run/tmp"
 export TMPDIR="$run/tmp"
@@ -110,7 +117,7 @@ table=$(
 echo
 echo "$table"
 doc="$here/docs/verification/fuzzing.md"
-if [ -f "$doc" ] && grep -q '<!-- fuzz-report:begin -->' "$doc"; then
+if [ "$coarse" = 0 ] && [ -f "$doc" ] && grep -q '<!-- fuzz-report:begin -->' "$doc"; then
   printf '%s\n' "$table" >"$run/report.md"
   awk -v report="$run/report.md" '
     /<!-- fuzz-report:end -->/ { skipping = 0 }
@@ -122,6 +129,6 @@ fi
 
 found=$(( $(ls "$run/scene/artifacts" | wc -l) + $(ls "$run/vtu/artifacts" | wc -l) ))
 if [ "$found" -gt 0 ]; then
-  echo "fuzz.sh: $found input(s) crashed, hung or ran out of memory: $run/{scene,vtu}/artifacts/" >&2
+  echo "$script_name: $found input(s) crashed, hung or ran out of memory: $run/{scene,vtu}/artifacts/" >&2
   exit 1
 fi

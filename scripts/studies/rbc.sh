@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
-# Particle-count study of the red-blood-cell relaxation (examples/rbc/rbc.toml):
-# the same scene at several resolutions (face_cells / layers of the shell), each
-# run to convergence; shape metrics, steps and wall time; error against
-# Evans-Fung and against the finest run. Writes rbc-study/{study.csv, *.png, table.md}.
-# Usage: bash scripts/rbc-study.sh [BUILD_DIR] [OUT_DIR] [RESOLUTIONS...]
+# Red-blood-cell relaxation at several particle counts: shape against the finest run.
+# The same scene (examples/rbc/rbc.toml) at several resolutions (face_cells / layers
+# of the shell), each run to convergence; shape metrics, steps and wall time; error
+# against Evans-Fung and against the finest run. Writes out/rbc/{study.csv, *.png,
+# table.md}; the default ladder also rewrites docs/figures/rbc-study* and the table of
+# docs/verification/rbc.md. About 15 minutes on 2 cores for the default ladder.
+# Usage: scripts/study rbc [--coarse] [RESOLUTIONS...]
+#   --coarse: 12:5 and 20:5 only (about a minute); docs untouched.
 #   RESOLUTIONS are face_cells:layers pairs, default 12:5 20:5 32:5 48:5 64:5
 #   (4,330 / 12,010 / 30,730 / 69,130 / 122,890 particles): the wall keeps its 5
 #   layers (the driver acts on the inner or outer half of the wall, so the layer
@@ -11,13 +14,22 @@
 #   A directory that already holds a summary.json is kept, so the study can be
 #   completed in several sittings.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-out=${2:-$here/rbc-study}
-shift $(( $# > 2 ? 2 : $# ))
-resolutions=("$@")
-[ ${#resolutions[@]} -eq 0 ] && resolutions=(12:5 20:5 32:5 48:5 64:5)
+script_name="study rbc"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/rbc
+update_docs=0
+if [ "${1:-}" = --coarse ]; then
+  shift; resolutions=(12:5 20:5)
+elif [ $# -gt 0 ]; then
+  resolutions=("$@")
+else
+  resolutions=(12:5 20:5 32:5 48:5 64:5); update_docs=1
+fi
 threads=${OMP_NUM_THREADS:-2}
+rkpm_need gnuplot python3
+rkpm=$(rkpm_program)
 mkdir -p "$out"
 
 for res in "${resolutions[@]}"; do
@@ -27,10 +39,10 @@ for res in "${resolutions[@]}"; do
   sed -e "s/^face_cells = .*/face_cells = $fc/" -e "s/^layers = .*/layers = $ly/" \
       -e "s/^name = \"rbc\"/name = \"rbc_$tag\"/" "$here/examples/rbc/rbc.toml" > "$out/$tag.toml"
   echo "$tag: running"
-  OMP_NUM_THREADS=$threads "$build/src/app/rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
+  OMP_NUM_THREADS=$threads "$rkpm" run "$out/$tag.toml" --out "$out/$tag" --quiet || echo "$tag: exit $?"
 done
 
-PYTHONPATH="$here/scripts" python3 - "$out" "${resolutions[@]}" <<'PY'
+PYTHONPATH="$here/scripts/lib" python3 - "$out" "${resolutions[@]}" <<'PY'
 import json, math, sys
 import rbc_profile
 out, res = sys.argv[1], sys.argv[2:]
@@ -109,3 +121,10 @@ plot "$out/study.csv" every ::1 using 4:8 with linespoints title "RMS vs Evans-F
      "" every ::1 using 4:6 with linespoints title "h_min/h_max"
 EOF
 echo "wrote $out/study.csv, $out/table.md, $out/study_vs_particles.png, $out/study_vs_time.png"
+if [ "$update_docs" = 1 ]; then
+  cp "$out/study.csv" "$here/docs/figures/rbc-study.csv"
+  cp "$out/study_vs_particles.png" "$here/docs/figures/rbc-study-vs-particles.png"
+  cp "$out/study_vs_time.png" "$here/docs/figures/rbc-study-vs-time.png"
+  rkpm_replace_generated "$here/docs/verification/rbc.md" "$out/table.md" "scripts/study rbc -->"
+  echo "updated docs/figures/rbc-study* and docs/verification/rbc.md"
+fi

@@ -1,26 +1,31 @@
 #!/usr/bin/env bash
-# Particle-count scaling study (docs/verification/performance.md): for a Mooney-Rivlin block, an
+# Particle-count scaling: set-up, step, bandwidth bound and memory up to 1e6 particles.
+# docs/verification/performance.md: for a Mooney-Rivlin block, an
 # LCE sphere and the RBC shell from 1e3 to --max particles, the set-up time (split by
 # stage), the time per step with 1 and 2 threads, the internal force against the
 # STREAM-triad bandwidth bound, peak memory per particle and the fitted exponents;
 # then the default RBC relaxation's wall time. Each size runs in its own process.
-# Writes OUT_DIR/perf-scaling.csv and OUT_DIR/perf-{step,setup,memory}-vs-particles.png;
-# with the default OUT_DIR (docs/figures) also the generated part of
-# docs/verification/performance.md, otherwise OUT_DIR/perf-scaling.md.
-# Usage: bash scripts/scaling-study.sh [BUILD_DIR] [OUT_DIR] [--max N] [--no-rbc-run] [rkpm_scaling options...]
-#   BUILD_DIR defaults to build/, --max to 1000000 (hours on 2 cores; 100000 takes minutes).
-#   --no-rbc-run skips the RBC relaxation (about 40 min at 1 thread on the seed's cell).
+# Writes out/scaling/perf-scaling.{csv,md} and perf-{step,setup,memory}-vs-particles.png;
+# a full run (--max 1000000 with the RBC run, the default) also copies them to
+# docs/figures/ and the tables into docs/verification/performance.md.
+# Usage: scripts/study scaling [--coarse] [--max N] [--no-rbc-run] [rkpm_scaling options...]
+#   --max defaults to 1000000 (hours on 2 cores; 100000 takes minutes).
+#   --coarse: --max 100000 --no-rbc-run; docs untouched.
+#   --no-rbc-run skips the default RBC relaxation's timing.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=$here/build
-out=$here/docs/figures
-[ $# -gt 0 ] && [[ $1 != --* ]] && { build=$1; shift; }
-[ $# -gt 0 ] && [[ $1 != --* ]] && { out=$1; shift; }
+script_name="study scaling"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+build=$rkpm_build_dir
+out=$rkpm_out_root/scaling
 max=1000000
 rbc_run=1
 extra=()
+coarse=0
 while [ $# -gt 0 ]; do
   case $1 in
+    --coarse) coarse=1; max=100000; rbc_run=0; shift ;;
     --max) max=$2; shift 2 ;;
     --max=*) max=${1#--max=}; shift ;;
     --no-rbc-run) rbc_run=0; shift ;;
@@ -31,22 +36,16 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 doc=$here/docs/verification/performance.md
 update_doc=0
-[ "$out" = "$here/docs/figures" ] && update_doc=1
+[ "$coarse" = 0 ] && [ "$max" = 1000000 ] && [ "$rbc_run" = 1 ] && [ ${#extra[@]} -eq 0 ] && update_doc=1
 
-command -v gnuplot >/dev/null || { echo "scaling-study.sh: gnuplot is required for the plots" >&2; exit 1; }
-if [ $update_doc = 1 ]; then
-  grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||
-    { echo "scaling-study.sh: $doc lacks the BEGIN/END GENERATED markers" >&2; exit 1; }
-fi
-
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target rkpm_scaling rkpm -j"$(nproc)"
+rkpm_need gnuplot python3
+rkpm_build rkpm_scaling rkpm
 program=$build/bench/rkpm_scaling
-[ -x "$program" ] || { echo "scaling-study.sh: $program was not built (is Google Benchmark installed?)" >&2; exit 1; }
+[ -x "$program" ] || rkpm_die "$program was not built (is Google Benchmark installed?)"
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-command_text="bash scripts/scaling-study.sh --max $max${extra[*]:+ ${extra[*]}}"
+command_text="scripts/study scaling --max $max${extra[*]:+ ${extra[*]}}"
 # What was measured: the commit, and whether the working tree differed from it.
 revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
 git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
@@ -55,7 +54,7 @@ git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revisio
 rbc_args=()
 if [ $rbc_run = 1 ]; then
   echo "RBC relaxation (examples/rbc/rbc.toml, 2 threads): running"
-  OMP_NUM_THREADS=2 "$build/src/app/rkpm" run "$here/examples/rbc/rbc.toml" --out "$scratch/rbc" --quiet ||
+  OMP_NUM_THREADS=2 "$rkpm_build_dir/src/app/rkpm" run "$here/examples/rbc/rbc.toml" --out "$scratch/rbc" --quiet ||
     echo "RBC relaxation: exit $?"
   if [ -f "$scratch/rbc/summary.json" ]; then
     read -r wall steps status < <(python3 -c '
@@ -70,18 +69,9 @@ fi
 
 csv=$out/perf-scaling.csv
 table=$out/perf-scaling.md
-[ $update_doc = 1 ] && table=$scratch/table.md
 "$program" --max "$max" --csv "$csv" --markdown "$table" --rbc-scene "$here/examples/rbc/rbc.toml" \
   --command "$command_text" --source-revision "$revision" "${rbc_args[@]}" "${extra[@]}"
 
-if [ $update_doc = 1 ]; then
-  # Replace the text between the markers with the fresh tables.
-  awk -v table="$table" '
-    /<!-- BEGIN GENERATED/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
-    /<!-- END GENERATED/   { skip = 0 }
-    !skip                  { print }' "$doc" > "$scratch/doc.md"
-  cp "$scratch/doc.md" "$doc"
-fi
 
 gnuplot <<GNUPLOT
 set datafile separator ","
@@ -115,5 +105,9 @@ plot for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("peak
        with linespoints lw 1 dt 2 pt 6 lc i title word(titles,i)." (Body arrays)", \
      2048 dt 3 lc rgb "gray40" title "target: 2 KB per particle"
 GNUPLOT
-[ $update_doc = 1 ] && table=$doc
 echo "wrote $csv, $out/perf-{step,setup,memory}-vs-particles.png and $table"
+if [ $update_doc = 1 ]; then
+  rkpm_replace_generated "$doc" "$table" "scripts/study scaling -->"
+  cp "$csv" "$out"/perf-{step,setup,memory}-vs-particles.png "$here/docs/figures/"
+  echo "updated docs/figures/perf-* and $doc"
+fi

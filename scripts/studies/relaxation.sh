@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Relaxation study (docs/verification/relaxation.md): the cost of reaching static equilibrium with
+# Cost of relaxation to equilibrium per variant (FIRE, nested levels, ...) against N.
+# docs/verification/relaxation.md: the cost of reaching static equilibrium with
 # each relaxation variant against particle count. For the red-blood-cell ladder
 # (examples/rbc/rbc.toml at several face_cells, its layers or the given ones) and for the contact scene
 # examples/spread_cell/spread_cell.toml, every variant runs to the scene's own
 # criterion; the study records steps, force evaluations (coarse levels included),
 # wall time and where the run landed (h_min/h_max for the RBC, and how far its
 # h_min/h_max and its thickness profile are from the finest RBC run of the same variant:
-# the relaxation issue's convergence targets), fits the exponent of
-# wall time and of force evaluations against particle count per variant, and writes
-# OUT_DIR/{relaxation.csv, relaxation-cost.png, table.md}.
-# Usage: bash scripts/relaxation-study.sh [BUILD_DIR] [OUT_DIR] [FACE_CELLS[:LAYERS]...]
+# the convergence criteria), fits the exponent of wall time and of force evaluations
+# against particle count per variant, and writes out/relaxation/{relaxation.csv,
+# relaxation-cost.png, table.md}; the default ladder also rewrites
+# docs/figures/relaxation-cost.png and the table of docs/verification/relaxation.md.
+# Usage: scripts/study relaxation [--coarse] [FACE_CELLS[:LAYERS]...]
+#   --coarse: face_cells 12 and 20, variants "nested example" (a few minutes); docs untouched.
 #   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles at the example's 5
 #   layers; with plain FIRE the two largest take about an hour each on 2 cores);
 #   FACE_CELLS:LAYERS sets the wall's layers too (docs/verification/rbc.md, "The wall's middle layer"). RKPM_VARIANTS selects variants
@@ -23,17 +26,24 @@
 #   directory holds a summary.json is kept, so the study can be completed in several
 #   sittings.
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-out=${2:-$here/relaxation-study}
-shift $(( $# > 2 ? 2 : $# ))
-face_cells=("$@")
-[ ${#face_cells[@]} -eq 0 ] && face_cells=(12 20 32 48 64)
-read -r -a variants <<< "${RKPM_VARIANTS:-fire nested example}"
+script_name="study relaxation"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/relaxation
+update_docs=0
+default_variants="fire nested example"
+if [ "${1:-}" = --coarse ]; then
+  shift; face_cells=(12 20); default_variants="nested example"
+elif [ $# -gt 0 ]; then
+  face_cells=("$@")
+else
+  face_cells=(12 20 32 48 64); [ -z "${RKPM_VARIANTS:-}" ] && update_docs=1
+fi
+read -r -a variants <<< "${RKPM_VARIANTS:-$default_variants}"
 threads=${OMP_NUM_THREADS:-2}
-rkpm=$build/src/app/rkpm
-[ -x "$rkpm" ] || { echo "relaxation-study.sh: $rkpm is not built" >&2; exit 1; }
-command -v gnuplot >/dev/null || { echo "relaxation-study.sh: gnuplot is required for the plot" >&2; exit 1; }
+rkpm_need gnuplot python3
+rkpm=$(rkpm_program)
 mkdir -p "$out"
 
 # The [integrator] lines each variant adds to the scene.
@@ -49,7 +59,7 @@ variant_keys() {
     exact) printf '%s\n' 'nested_levels = [0.375, 0.625]' 'contact_mass_scaling = true' \
              'relax_finish = "newton_krylov"' 'finish_force_tol = 3e-5' ;;
     fire2) echo 'relax_method = "fire2"' ;;
-    *) echo "relaxation-study.sh: unknown variant '$1' (fire, measured, nested, mass_scaling, contact, example, example3, exact, fire2)" >&2; exit 2 ;;
+    *) echo "study relaxation: unknown variant '$1' (fire, measured, nested, mass_scaling, contact, example, example3, exact, fire2)" >&2; exit 2 ;;
   esac
 }
 
@@ -84,7 +94,7 @@ for variant in "${variants[@]}"; do
   case $variant in nested|example|example3|exact) ;; *) run_case "spread_cell_$variant" "$here/examples/spread_cell/spread_cell.toml" "$variant" ;; esac
 done
 
-PYTHONPATH="$here/scripts" python3 - "$out" "${variants[@]}" <<'PY'
+PYTHONPATH="$here/scripts/lib" python3 - "$out" "${variants[@]}" <<'PY'
 import csv, glob, json, math, os, sys
 import rbc_profile
 out, variants = sys.argv[1], sys.argv[2:]
@@ -108,7 +118,7 @@ for path in sorted(glob.glob(f"{out}/*/summary.json")):
         h_exact=shape.get("h_min_over_h_max"),
         profile=rbc_profile.read(os.path.dirname(path), shape["diameter"]) if shape else None))
 if not rows:
-    sys.exit("relaxation-study.sh: no finished runs")
+    sys.exit("study relaxation: no finished runs")
 rows.sort(key=lambda r: (r["scene"], r["variant"], r["particles"]))
 # Distance to the finest RBC run of the same variant, the measure of the convergence
 # targets: the difference in h_min/h_max, and the profiles' RMS distance (rbc_profile.py).
@@ -179,3 +189,8 @@ plot $plots
 EOF
 fi
 echo "wrote $out/relaxation.csv, $out/table.md and $out/relaxation-cost.png"
+if [ "$update_docs" = 1 ]; then
+  cp "$out/relaxation-cost.png" "$here/docs/figures/relaxation-cost.png"
+  rkpm_replace_generated "$here/docs/verification/relaxation.md" "$out/table.md" "scripts/study relaxation -->"
+  echo "updated docs/figures/relaxation-cost.png and docs/verification/relaxation.md"
+fi

@@ -1,35 +1,37 @@
 #!/usr/bin/env bash
-# Every example scene distributed against one process (docs/verification/distributed.md): each scene
+# Every example scene on 2 and 4 ranks against one process, bit for bit.
+# docs/verification/distributed.md: each scene
 # runs as one process and on each rank count of RKPM_RANKS (mpirun, one thread per
 # rank), and `rkpm compare` gives the largest distance between the final positions over
 # the largest displacement. Relaxations run to the scene's own convergence (the same
 # step count is expected); dynamic scenes run RKPM_DYNAMIC_STEPS steps, as the
-# matching target states. Writes OUT/distributed-match.csv and the table: the generated
-# part of docs/verification/distributed.md with the default OUT (docs/figures), otherwise
-# OUT/distributed-match.md.
-# Usage: bash scripts/distributed-match.sh [BUILD_DIR] [OUT_DIR]
+# matching target states. Writes out/distributed-match/distributed-match.{csv,md}; a
+# full run also copies the CSV to docs/figures/ and the table into
+# docs/verification/distributed.md. About 20 minutes on 2 cores.
+# Usage: scripts/study distributed-match [--coarse]
+#   --coarse: 2 ranks only, the sag and spread_cell scenes; docs untouched.
 #   environment: RKPM_RANKS (default "2 4"), RKPM_DYNAMIC_STEPS (default 200),
 #                RKPM_SCENES (default: every example scene, paths under examples/),
-#                RKPM_BIN (a built rkpm to use instead of building BUILD_DIR),
-#                RKPM_TABLE_ONLY=1 (no runs: the table again from OUT/distributed-match.csv).
+#                RKPM_TABLE_ONLY=1 (no runs: the table again from the CSV).
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-out=${2:-$here/docs/figures}
+script_name="study distributed-match"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/distributed-match
+coarse=0
+[ "${1:-}" = --coarse ] && coarse=1
 ranks_list=${RKPM_RANKS:-2 4}
-dynamic_steps=${RKPM_DYNAMIC_STEPS:-200}
 scenes=${RKPM_SCENES:-sag/sag.toml rbc/rbc.toml rbc/control.toml spread_cell/spread_cell.toml adhesion/adhesion.toml crawling/crawling.toml}
+if [ "$coarse" = 1 ]; then ranks_list=${RKPM_RANKS:-2}; scenes=${RKPM_SCENES:-sag/sag.toml spread_cell/spread_cell.toml}; fi
+dynamic_steps=${RKPM_DYNAMIC_STEPS:-200}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-command -v mpirun >/dev/null || { echo "distributed-match.sh: mpirun is required (scripts/install-deps.sh)" >&2; exit 1; }
+rkpm_need mpirun
 if [ -n "${RKPM_TABLE_ONLY:-}" ]; then
   rkpm=""
-elif [ -n "${RKPM_BIN:-}" ]; then
-  rkpm=$(realpath "$RKPM_BIN")
 else
-  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" --target rkpm -j"$(nproc)" >/dev/null
-  rkpm=$(cd "$build" && pwd)/src/app/rkpm
+  rkpm=$(rkpm_program)
 fi
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
@@ -80,12 +82,11 @@ fi
 read -r revision load < <(sed -n '1s/^# revision \(.*\), load \(.*\)$/\1 \2/p' "$csv" | sed 's/ with uncommitted changes/+/')
 
 md=$out/distributed-match.md
-[ "$out" = "$here/docs/figures" ] && md=$scratch/distributed-match.md
 awk -F, -v rev="$revision" -v load="$load" -v dyn="$dynamic_steps" '
 /^#/ || /^scene,/ { next }
 { rows[NR] = $0; last = NR }
 END {
-  printf "Measured by `bash scripts/distributed-match.sh` at %s, one thread per rank on 2 cores (4 ranks oversubscribe them), load average %s before the runs. Relaxations run to convergence; dynamic scenes %d steps. The difference is the largest distance between a particle'\''s final positions in the two runs over the one-process run'\''s largest displacement (`rkpm compare`).\n\n", rev, load, dyn
+  printf "Measured by `scripts/study distributed-match`, one thread per rank on 2 cores (4 ranks oversubscribe them), load average %s before the runs. Relaxations run to convergence; dynamic scenes %d steps. The difference is the largest distance between a particle'\''s final positions in the two runs over the one-process run'\''s largest displacement (`rkpm compare`).\n\n", load, dyn
   print "| scene | mode | ranks | particles | steps | converged | wall time [s] | largest displacement [m] | largest difference [m] | difference / largest displacement |"
   print "|---|---|---:|---:|---:|---|---:|---:|---:|---:|"
   for (i = 3; i <= last; i++) {
@@ -95,11 +96,10 @@ END {
 }' "$csv" >"$md"
 cat "$md"
 doc=$here/docs/verification/distributed.md
-if [ "$out" = "$here/docs/figures" ]; then
-  awk -v md="$md" '
-    /<!-- BEGIN GENERATED: scripts\/distributed-match.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; skip = 1; next }
-    skip && /<!-- END GENERATED/ { skip = 0 }
-    !skip { print }' "$doc" >"$scratch/doc.md" && cp "$scratch/doc.md" "$doc"
-  echo "distributed-match: updated $doc"
+if [ "$coarse" = 0 ]; then
+  { echo; cat "$md"; echo; } >"$scratch/block.md"
+  rkpm_replace_generated "$doc" "$scratch/block.md" "scripts/study distributed-match -->"
+  cp "$csv" "$here/docs/figures/distributed-match.csv"
+  echo "$script_name: updated $doc and docs/figures/distributed-match.csv"
 fi
-echo "distributed-match: wrote $csv"
+echo "$script_name: wrote $csv and $md"

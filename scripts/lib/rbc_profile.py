@@ -1,8 +1,7 @@
 """The distance between two red-blood-cell thickness profiles, the measure the RBC
-studies (scripts/rbc-study.sh, scripts/relaxation-study.sh) and the relaxation issue's
-convergence target use: the RMS of h(r) / D over 41 points of r / R in 0.05-0.95, each
-profile in units of its own diameter D (docs/verification/relaxation.md, "Is the default run's end
-the converged state?"). The study scripts import it (PYTHONPATH=scripts)."""
+studies (scripts/study rbc, scripts/study relaxation) and their convergence criteria
+use: the RMS of h(r) / D over 41 points of r / R in 0.05-0.95, each profile in units of
+its own diameter D (docs/verification/rbc.md). The study scripts import it (PYTHONPATH=scripts/lib)."""
 import csv
 import math
 

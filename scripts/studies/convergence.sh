@@ -1,23 +1,30 @@
 #!/usr/bin/env bash
+# Convergence of the RK discretisation (Lame sphere): rates, error against run time.
 # Regenerates the convergence study of the RK discretisation with nodal integration
 # (Lame sphere under internal pressure): docs/figures/convergence.csv, the plots
 # docs/figures/convergence-*.png and the generated part of docs/verification/convergence.md.
-# Usage: bash scripts/convergence-study.sh [extra rkpm_convergence options]
-# The build directory is build/ unless RKPM_BUILD_DIR says otherwise.
+# With --coarse, the same into out/convergence/ only (the docs keep the full run).
+# Usage: scripts/study convergence [--coarse] [extra rkpm_convergence options]
+#   (rkpm_convergence --help lists them; --coarse passes its smallest ladder)
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${RKPM_BUILD_DIR:-"$here/build"}
+script_name="study convergence"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+build=$rkpm_build_dir
 figures="$here/docs/figures"
 doc="$here/docs/verification/convergence.md"
+coarse=0
+coarse_options=()
+if [ "${1:-}" = --coarse ]; then
+  coarse=1; shift; figures=$rkpm_out_root/convergence
+  coarse_options=(--resolutions 5x3,7x4,9x5 --contrast-resolutions 5x3,7x4)
+fi
 
-command -v gnuplot >/dev/null || { echo "convergence-study.sh: gnuplot is required for the plots" >&2; exit 1; }
-grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||
-  { echo "convergence-study.sh: $doc lacks the BEGIN/END GENERATED markers" >&2; exit 1; }
-
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target rkpm_convergence -j"$(nproc)"
+rkpm_need gnuplot
+rkpm_build rkpm_convergence
 program="$build/bench/rkpm_convergence"
-[ -x "$program" ] || { echo "convergence-study.sh: $program was not built (is Google Benchmark installed?)" >&2; exit 1; }
+[ -x "$program" ] || rkpm_die "$program was not built (is Google Benchmark installed?)"
 
 mkdir -p "$figures"
 # Idle OpenMP threads sleep instead of spinning: the solver runs many short
@@ -27,14 +34,10 @@ export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 csv="$figures/convergence.csv"
 table=$(mktemp)
 trap 'rm -f "$table" "$doc.tmp"' EXIT
-"$program" --csv "$csv" --markdown "$table" "$@"
+"$program" --csv "$csv" --markdown "$table" "${coarse_options[@]}" "$@"
 
-# Replace the text between the markers with the fresh table.
-awk -v table="$table" '
-  /<!-- BEGIN GENERATED/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
-  /<!-- END GENERATED/   { skip = 0 }
-  !skip                  { print }' "$doc" > "$doc.tmp"
-mv "$doc.tmp" "$doc"
+if [ "$coarse" = 1 ]; then cp "$table" "$figures/convergence.md"; doc=$figures/convergence.md
+else rkpm_replace_generated "$doc" "$table"; fi
 
 # Reference slopes h^2 and h^1 (N^-2/3, N^-1/3), drawn through the coarsest
 # stabilized run so the measured lines can be compared with them by eye.

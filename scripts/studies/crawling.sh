@@ -1,37 +1,31 @@
 #!/usr/bin/env bash
-# Crawling study (seed section 4.3): runs examples/crawling/crawling.toml on the
+# Crawling on a graded substrate (seed 4.3): drift of graded, uniform, mirrored runs.
+# Runs examples/crawling/crawling.toml on the
 # graded substrate of Eq. 18 (moduli x (4 y/L0 + 0.5), stiffer towards +y), on a
 # uniform substrate of the same mean stiffness (x 2.5) and on the mirrored gradient
 # (x (4.5 - 4 y/L0)), and writes
 #   docs/figures/crawling_drift.csv   time and centroid drift along y of the three runs
 #   docs/figures/crawling_drift.png   the drift against time (gnuplot)
 #   the generated table of docs/verification/crawling.md
-# Usage: bash scripts/crawling-study.sh [--coarse]
+# The runs go to out/crawling/. The default run takes a few minutes on 2 cores.
+# Usage: scripts/study crawling [--coarse]
 #   --coarse: an 11-cell sphere on a 30 x 30 x 3 block (s0 = 1 um), about 1 minute;
-#             writes into out/crawling-study only (the docs keep the default run).
-# The build directory is build/ unless RKPM_BUILD_DIR says otherwise; RKPM names an
-# already built executable instead; RKPM_THREADS sets the thread count (default 2);
-# RKPM_OUT the output directory (default out/crawling-study).
+#             writes into out/crawling/ only (the docs keep the default run).
+# RKPM_THREADS sets the thread count (default 2).
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${RKPM_BUILD_DIR:-"$here/build"}
+script_name="study crawling"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
 threads=${RKPM_THREADS:-2}
-out=${RKPM_OUT:-"$here/out/crawling-study"}
+out=$rkpm_out_root/crawling
 scene="$here/examples/crawling/crawling.toml"
 doc="$here/docs/verification/crawling.md"
 coarse=0
 [ "${1:-}" = "--coarse" ] && coarse=1
 
-command -v jq >/dev/null || { echo "crawling-study.sh: jq is required to read summary.json" >&2; exit 1; }
-command -v gnuplot >/dev/null || { echo "crawling-study.sh: gnuplot is required for the figure" >&2; exit 1; }
-grep -q '<!-- BEGIN GENERATED' "$doc" && grep -q '<!-- END GENERATED' "$doc" ||
-  { echo "crawling-study.sh: $doc lacks the BEGIN/END GENERATED markers" >&2; exit 1; }
-rkpm=${RKPM:-}
-if [ -z "$rkpm" ]; then
-  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" --target rkpm -j"$(nproc)"
-  rkpm="$build/src/app/rkpm"
-fi
+rkpm_need jq gnuplot
+rkpm=$(rkpm_program)
 mkdir -p "$out"
 if [ "$coarse" = 1 ]; then
   figures="$out"
@@ -51,7 +45,7 @@ variant() {
   fi
   # The scene's directory is where relative paths would resolve: none are used.
   grep -q "^grade_a = $2\$" "$file" && grep -q "^grade_b = $3\$" "$file" ||
-    { echo "crawling-study.sh: could not set the grading in $file" >&2; exit 1; }
+    { echo "study crawling: could not set the grading in $file" >&2; exit 1; }
 }
 variant graded 4.0 0.5
 variant uniform 0.0 2.5
@@ -89,7 +83,7 @@ plot "$csv" using 1:2 skip 1 with linespoints title "graded (stiffer at +y)", \
      "$csv" using 1:4 skip 1 with linespoints title "mirrored (stiffer at -y)"
 GNUPLOT
 
-# Table: final drifts and the criteria of the issue.
+# Table: final drifts and the sign and symmetry criteria.
 value() { jq -r ".\"contact cell substrate\".report.$2" "$out/$1/summary.json"; }
 g=$(value graded 'drift[1]'); u=$(value uniform 'drift[1]'); m=$(value mirrored 'drift[1]')
 table=$(mktemp)
@@ -114,10 +108,7 @@ trap 'rm -f "$table"' EXIT
 } > "$table"
 cat "$table"
 if [ "$coarse" = 0 ]; then
-  awk -v table="$table" '
-    /<!-- BEGIN GENERATED/ { print; while ((getline line < table) > 0) print line; skip = 1; next }
-    /<!-- END GENERATED/ { skip = 0 }
-    !skip' "$doc" > "$doc.tmp" && mv "$doc.tmp" "$doc"
+  rkpm_replace_generated "$doc" "$table"
   echo "wrote $csv, $figures/crawling_drift.png and the table of $doc"
 else
   echo "wrote $csv and $figures/crawling_drift.png (coarse: docs untouched)"

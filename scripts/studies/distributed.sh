@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Distributed-run study (docs/verification/distributed.md): weak and strong scaling of a clamped
+# Weak and strong scaling on 1 and 2 ranks, ghost fractions, a 64-rank model.
+# docs/verification/distributed.md: weak and strong scaling of a clamped
 # Mooney-Rivlin block under a body force (the sag example's physics, dynamic with
 # damping) on 1 and 2 ranks of this machine, one thread per rank, and the strong case
 # again as one rank with 2 threads (the same cores without MPI); the ghost fraction
@@ -8,29 +9,34 @@
 #
 # Time per step is measured as the difference of two runs of S1 and S2 steps
 # (wall time from summary.json), so the set-up cancels; each figure is the median of
-# REPEATS such differences. Writes OUT/distributed.csv, OUT/distributed-scaling.png and
-# the table with the model: the generated part of docs/verification/distributed.md with the default
-# OUT (docs/figures), otherwise OUT/distributed.md.
-# Usage: bash scripts/distributed-study.sh [BUILD_DIR] [OUT_DIR]
+# REPEATS such differences. Writes out/distributed/distributed.{csv,md} and
+# distributed-scaling.png; a full run also copies the CSV and PNG to docs/figures/ and
+# the table with the model into docs/verification/distributed.md. About 15 minutes.
+# Usage: scripts/study distributed [--coarse]
+#   --coarse: a 13^3 block, no extra weak size, 1 repeat; docs untouched.
 #   environment: RKPM_CELLS (default 24: the 1-rank block is 25 x 25 x 25 particles),
 #                RKPM_WEAK_CELLS (default 40: the weak case again at 41^3 particles per
 #                rank, whose operators no longer fit the shared 32 MB L3 cache of one
 #                rank's run; "" = none), RKPM_REPEATS (default 3), RKPM_STEPS (default "40 240").
 set -euo pipefail
-here=$(cd "$(dirname "$0")/.." && pwd)
-build=${1:-$here/build}
-out=${2:-$here/docs/figures}
+script_name="study distributed"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/distributed
+coarse=0
+if [ "${1:-}" = --coarse ]; then
+  coarse=1
+  : "${RKPM_CELLS:=12}" "${RKPM_WEAK_CELLS=}" "${RKPM_REPEATS:=1}"
+fi
 cells=${RKPM_CELLS:-24}
 read -r -a weak_cells <<<"${RKPM_WEAK_CELLS-40}"
 repeats=${RKPM_REPEATS:-3}
 read -r s1 s2 <<<"${RKPM_STEPS:-40 240}"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-command -v gnuplot >/dev/null || { echo "distributed-study.sh: gnuplot is required for the plot" >&2; exit 1; }
-command -v mpirun >/dev/null || { echo "distributed-study.sh: mpirun is required (scripts/install-deps.sh)" >&2; exit 1; }
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --target rkpm -j"$(nproc)" >/dev/null
-rkpm=$build/src/app/rkpm
+rkpm_need gnuplot mpirun
+rkpm=$(rkpm_program)
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -116,7 +122,7 @@ measure() {
   fi
   awk -v c="$name" -v r="$ranks" -v t="$threads" -v n="$particles" -v st="$step" -v su="$setup" -v g="$ghosts" -v d="$doubles" 'BEGIN {
     printf "%s,%d,%d,%d,%d,%s,%s,%d,%.4f,%d\n", c, r, t, n, n / r, st, su, g, g / (n / r), d }' >>"$csv"
-  echo "distributed-study: $name on $ranks rank(s) x $threads thread(s), $particles particles: $step s per step, set-up $setup s"
+  echo "study distributed: $name on $ranks rank(s) x $threads thread(s), $particles particles: $step s per step, set-up $setup s"
 }
 
 load=$(cut -d' ' -f1-3 /proc/loadavg)
@@ -131,14 +137,13 @@ for c in "${weak_cells[@]}"; do
   measure weak 2 1 $((2 * c + 1)) "$c"
 done
 
-# The table and the model: into docs/verification/distributed.md with the default OUT_DIR, else OUT_DIR/distributed.md.
+# The table and the model: out/distributed/distributed.md, and the page for a full run.
 md=$out/distributed.md
-[ "$out" = "$here/docs/figures" ] && md=$scratch/distributed.md
 awk -F, -v rev="$revision" -v load="$load" -v reps="$repeats" -v s1="$s1" -v s2="$s2" -v cores="$cores" '
 NR == 1 { next }
 { c[NR] = $1; r[NR] = $2; th[NR] = $3; n[NR] = $4; npr[NR] = $5; st[NR] = $6; su[NR] = $7; g[NR] = $8; gf[NR] = $9; d[NR] = $10; last = NR }
 END {
-  printf "Measured by `bash scripts/distributed-study.sh` at %s on %d cores, load average before the runs %s; each time the median of %d differences of %d- and %d-step runs (the set-up cancels).\n\n", rev, cores, load, reps, s1, s2
+  printf "Measured by `scripts/study distributed` on %d cores, load average before the runs %s; each time the median of %d differences of %d- and %d-step runs (the set-up cancels).\n\n", cores, load, reps, s1, s2
   print "| case | ranks x threads | particles | per rank | time per step [ms] | set-up [s] | ghosts (largest rank) | ghost fraction | doubles exchanged per force evaluation |"
   print "|---|---:|---:|---:|---:|---:|---:|---:|---:|"
   for (i = 2; i <= last; i++)
@@ -179,7 +184,7 @@ done
 gnuplot <<EOF
 set terminal pngcairo size 800,500
 set output "$out/distributed-scaling.png"
-set title "Time per step, one thread per rank (scripts/distributed-study.sh)"
+set title "Time per step, one thread per rank (scripts/study distributed)"
 set xlabel "ranks"
 set ylabel "time per step [ms]"
 set xrange [0.5:2.5]
@@ -190,13 +195,12 @@ plot $weak_plots \
      "< awk -F, '\$1==\"strong\"' $csv" using 2:(1000*\$6) with linespoints title "strong: fixed total", \\
      "< awk -F, '\$1==\"threads\"' $csv" using (2):(1000*\$6) with points pt 7 ps 1.5 title "1 rank x 2 threads, strong size"
 EOF
-# With the default OUT_DIR the table also replaces the generated part of docs/verification/distributed.md.
+# A full run also replaces the generated part of docs/verification/distributed.md.
 doc=$here/docs/verification/distributed.md
-if [ "$out" = "$here/docs/figures" ]; then
-  awk -v md="$md" '
-    /<!-- BEGIN GENERATED: scripts\/distributed-study.sh/ { print; print ""; while ((getline line < md) > 0) print line; print ""; print "![time per step](figures/distributed-scaling.png)"; print ""; skip = 1; next }
-    skip && /<!-- END GENERATED/ { skip = 0 }
-    !skip { print }' "$doc" >"$scratch/doc.md" && cp "$scratch/doc.md" "$doc"
-  echo "distributed-study: updated $doc"
+if [ "$coarse" = 0 ]; then
+  { echo; cat "$md"; echo; echo "![time per step](../figures/distributed-scaling.png)"; echo; } >"$scratch/block.md"
+  rkpm_replace_generated "$doc" "$scratch/block.md" "scripts/study distributed -->"
+  cp "$csv" "$out/distributed-scaling.png" "$here/docs/figures/"
+  echo "$script_name: updated $doc, docs/figures/distributed.csv and docs/figures/distributed-scaling.png"
 fi
-echo "distributed-study: wrote $csv and $out/distributed-scaling.png"
+echo "$script_name: wrote $csv, $md and $out/distributed-scaling.png"
