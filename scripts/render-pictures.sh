@@ -5,8 +5,8 @@
 #                OUT_DIR/spread_cell (default out/)
 #   PICTURE_DIR  where the PNGs go (default docs/figures/pictures)
 #   --run        first run the example scenes whose runs are missing with
-#                the build's rkpm (on 2 cores: rbc 3-4 min, adhesion 70 s,
-#                crawling 50 s, spread_cell 15 s)
+#                the build's rkpm (on 2 cores: rbc about a minute, adhesion 70 s,
+#                crawling 50 s, spread_cell 10 s)
 #   --check      the CI check: run spread_cell only, render it, fail on a blank picture
 # Debian's python3-paraview conflicts with libvtk9-dev, the build dependency: when
 # pvbatch is missing, this installs ParaView and a virtual X display (Xvfb), renders,

@@ -2,7 +2,7 @@
 // nodal integration on the Lame thick-walled sphere under internal pressure.
 // For every scheme and resolution: relative L2 displacement and energy-norm errors,
 // set-up and solve wall times. Writes a CSV and a markdown table (see
-// docs/verification/convergence.md; scripts/convergence-study.sh regenerates both).
+// docs/verification/convergence.md; `scripts/study convergence` regenerates both).
 #include "lame_study.hpp"
 #include "report.hpp"
 

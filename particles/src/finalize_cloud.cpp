@@ -119,8 +119,9 @@ struct FaceRecord {
 
 // Sorts the face records by key, then element: bucketed by the smallest node id (a
 // counting sort, linear), then each bucket's few records (the faces at one node) by the
-// whole order. The same result as one comparison sort of all of them, which took most
-// of the cloud's set-up at 1e6 particles (six records per hexahedron).
+// whole order. The same result as one comparison sort of all of them (six records per
+// hexahedron, O(n log n) on the largest array of the cloud's set-up), in linear time;
+// docs/verification/performance.md measures the set-up.
 void sort_faces(std::vector<FaceRecord>& faces, std::size_t n_particles) {
   const auto before = [](const FaceRecord& a, const FaceRecord& b) {
     return a.key != b.key ? a.key < b.key : a.element < b.element;

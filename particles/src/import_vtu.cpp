@@ -140,10 +140,11 @@ std::string first_meaningful_line(const std::string& messages) {
 
 // The sizes a file declares, checked before VTK's reader acts on them: it
 // allocates and loops by them without bounds (NumberOfComponents = "34294967295"
-// makes VTK 9.1 loop for minutes, a last cell offset of 2^61 makes it allocate a
-// wrapped-around size and write past it). VTK reads attributes with operator>>; a
-// value that does not parse that way as an integer, or lies outside its range, is
-// refused.
+// overflows int and makes VTK 9.1 loop over that many component names, a hang; a last
+// cell offset of 2^61 makes it allocate a wrapped-around size and write past it;
+// docs/verification/fuzzing.md lists what the fuzzers found). VTK reads attributes
+// with operator>>; a value that does not parse that way as an integer, or lies outside
+// its range, is refused.
 //   NumberOfComponents of an array: 1 to kMaxComponents
 //   the offset of an array's appended data: 0 to the file's size
 //   the points and the cells of all pieces, and the values of all arrays

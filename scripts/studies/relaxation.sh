@@ -15,7 +15,7 @@
 #   --coarse: face_cells 12 and 20, variants "nested example" (a few minutes); docs untouched.
 #   FACE_CELLS default 12 20 32 48 64 (4,330 to 122,890 particles at the example's 5
 #   layers; with plain FIRE the two largest take about an hour each on 2 cores);
-#   FACE_CELLS:LAYERS sets the wall's layers too (docs/verification/rbc.md, "The wall's middle layer"). RKPM_VARIANTS selects variants
+#   FACE_CELLS:LAYERS sets the wall's layers too (docs/verification/rbc.md, "How the driver is placed in a five-layer wall"). RKPM_VARIANTS selects variants
 #   (default "fire nested example"; also "measured", "mass_scaling", "contact" and
 #   "fire2"). Every variant is plain FIRE plus its own keys: the scenes' relaxation keys
 #   (nested_levels, contact_mass_scaling) are taken out first, and "example" puts back
@@ -191,6 +191,8 @@ fi
 echo "wrote $out/relaxation.csv, $out/table.md and $out/relaxation-cost.png"
 if [ "$update_docs" = 1 ]; then
   cp "$out/relaxation-cost.png" "$here/docs/figures/relaxation-cost.png"
-  rkpm_replace_generated "$here/docs/verification/relaxation.md" "$out/table.md" "scripts/study relaxation -->"
+  { cat "$out/table.md"; echo
+    echo "![wall time to equilibrium against particle count](../figures/relaxation-cost.png)"; } >"$out/block.md"
+  rkpm_replace_generated "$here/docs/verification/relaxation.md" "$out/block.md" "scripts/study relaxation -->"
   echo "updated docs/figures/relaxation-cost.png and docs/verification/relaxation.md"
 fi

@@ -272,8 +272,9 @@ void append_values(const CsrPiece<Vec3f>& piece, std::vector<float>& out) {
 
 // Joins the pieces in block order into one CSR matrix, freeing each as it goes and
 // returning the freed pages every few pieces, so a build's peak is about one copy of
-// the matrix (the pieces, then the matrix as it fills) rather than two (at 1e6
-// particles of a block, 2.9 KB per particle before, docs/verification/performance.md). `value` takes
+// the matrix (the pieces, then the matrix as it fills) rather than two: the allocator
+// keeps freed blocks in the middle of its heap resident unless told to return them
+// (docs/verification/performance.md measures the peak). `value` takes
 // each entry as it is, or (single-precision gradients) as three planar floats.
 template <class Value, class Out>
 void join(std::vector<CsrPiece<Value>>& pieces, std::vector<Index>& row_offset, std::vector<Index>& col,

@@ -154,8 +154,9 @@ SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, co
 namespace {
 // Sorts a candidate list by id: least-significant-digit radix sort on the ids' offsets
 // from the smallest, one byte per pass and only as many passes as the offsets need
-// (two or three for a cell's neighbours). A comparison sort of ~150 ids mispredicted
-// about every other branch, and took 5 % of a sphere's set-up.
+// (two or three for a cell's neighbours). A comparison sort of a list this short
+// mispredicts about every other branch, and it showed in a sphere's set-up
+// (docs/verification/performance.md measures the set-up).
 void sort_ids(std::vector<Index>& ids, std::vector<Index>& buffer) {
   const std::size_t n = ids.size();
   if (n < 2) return;
@@ -237,8 +238,9 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
   if (!grid_.empty() && grid_.covers(reach)) {
     // Ellipsoids: the grid's rows (rk/ellipsoid_grid.hpp), tested in the order it
     // stores them, from contiguous arrays. A refined thin wall's ball holds several
-    // times the particles its supports can reach; on the 1e6-particle RBC shell the
-    // set-up took 28 s this way against 49 s through the tree (docs/verification/performance.md).
+    // times the particles its supports can reach, and the tree hands them out one by one
+    // from wherever it keeps them; the grid's contiguous rows make the large RBC shell's
+    // set-up much faster (docs/verification/performance.md measures it).
     grid_.ranges(centre, reach, ball, out.ranges);
     std::size_t visited = 0;
     for (const auto& range : out.ranges) visited += range.second - range.first;

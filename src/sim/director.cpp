@@ -108,7 +108,8 @@ DirectorStep advance_director(Body& body, double dt) {
   // d_I,start) (x) b_I, the deformation the body made over the step (drift, the supports'
   // advance, a FIRE 2.0 step back), and (F - F_start) / dt its rate (the smoothed
   // velocity gradient in the reference frame). No gather over the rows: their sweep over
-  // the velocities cost as much as the force pass's gather of F.
+  // the velocities would be a second pass over the operator, the work of the force
+  // pass's gather of F again (docs/verification/relaxation.md measures the saving).
   DirectorStep result;
   const double energy_before = director_energy(body, model);
   result.active_work = active_work_since(body, dir.F_start);

@@ -25,7 +25,7 @@ struct EssentialBC::Group {
   std::vector<double> cf_val;
   // Lambda_CC, factored once: its transpose solves through the same factors
   // (SparseLU::transpose()). A second factorization of Lambda_CC^T held as much again,
-  // 32 MB for the 10^4 particles of a 1e6-particle block's fixed face.
+  // which showed in a large block's peak memory (docs/verification/performance.md).
   Eigen::SparseLU<SparseMatrix> lu;
   // The rows whose free part this rank forms: all of them on one rank, those of the
   // particles it owns when distributed (a run of C: ranks own increasing ranges).

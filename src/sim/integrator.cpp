@@ -466,7 +466,7 @@ double Integrator::mode_step_limit() const {
 // or stops them: a FIRE stop (P <= 0) zeroes every velocity, and measured after it the
 // kinetic criterion would hold at every stop, so a run creeping along a soft mode would
 // be declared converged at the first stop where the residual happens to be below its
-// tolerance (docs/verification/relaxation.md, "Where the default run stopped").
+// tolerance (docs/theory/relaxation.md, "When the run stops").
 void Integrator::update_convergence(double kinetic_of_motion) {
   double residual = 0.0;
   for (std::size_t k = 0; k < world_.bodies.size(); ++k) {

@@ -20,9 +20,9 @@ namespace {
 // sum_I Psi_I(X_J) d_I matches target[J] at every owned particle J. The RK shape
 // functions do not interpolate (Psi_I(X_J) != delta_IJ), so d = target would give the
 // finer cloud a smoothed copy of the coarser field: on the red-blood-cell scene that
-// copy missed the field by 5.6 % of the largest displacement, moved the enclosed volume
-// by 0.8 % and the contact gaps with it, and the finer cloud spent thousands of steps
-// re-equilibrating (docs/verification/relaxation.md, "The transfer keeps the shape"). Richardson's
+// copy missed the field by percents of the largest displacement, moved the enclosed
+// volume and the contact gaps with it, and the finer cloud spent a long time
+// re-equilibrating (docs/theory/relaxation.md, "Nested levels"). Richardson's
 // iteration d <- d + (target - N d) works because N is a sampled smoothing kernel that
 // reproduces linear fields: the smooth part of the mismatch, which moves the shape,
 // goes within a few sweeps (its eigenvalues of N are near 1); the rough part, which the
@@ -30,8 +30,9 @@ namespace {
 // less than a tenth of the largest mismatch (a sweep that makes it grow is undone), or
 // when that is below 1e-6 of the largest target (a linear field: at once), or after
 // `max_sweeps`. Then the supports' prescribed values are imposed, and the mismatch the
-// body keeps is measured and returned. On the RBC ladder's levels: 5-13 sweeps, the
-// mismatch left 0.02-1.5 % of the largest displacement (from 5-6 % before the sweeps).
+// body keeps is measured and returned (summary.json's transfer_sweeps and
+// transfer_mismatch; docs/verification/relaxation.md gives them for the RBC ladder's
+// levels).
 Transfer match_physical_displacement(const par::Comm& comm, Body& body, const std::vector<Vec3>& target,
                                      int max_sweeps = 50) {
   const Index begin = body.owned_begin(), end = body.owned_end();

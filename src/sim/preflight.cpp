@@ -26,11 +26,11 @@ constexpr double kPi = 3.14159265358979323846;
 // inertia, volume, spacing, stabilization weight, a surface term's quadrature, the
 // set-up's kd-tree and support radii (freed before the run, but part of the peak), the
 // director arrays of an LCE body (h, h0, rate, F_start, grad_h, flux, divergence) and the
-// force pass's per-thread buffers. Rounded up from the peaks measured at 1e6 particles
-// beyond the operators when the state held more (block 678, sphere 933, RBC shell
-// 1,235 bytes per particle, docs/verification/performance.md), plus the 444 bytes per particle that
-// the volume constraint's copy of its rows in particle order added on the RBC shell
-// (measured at 122,890 particles; docs/verification/relaxation.md); kept as a margin.
+// force pass's per-thread buffers. The largest of the geometries' measured peaks beyond
+// the operators (the RBC shell's), rounded up, plus what the volume constraint's copy of
+// its rows in particle order adds on that shell; docs/verification/performance.md holds
+// the measurements. Kept as a margin: the scaling study measures the peaks again, and a
+// state that grows past this must raise it.
 constexpr double kStateBytes = 1750.0;
 // Bytes per operator entry at the set-up peak: a smoothed-gradient entry is a 4-byte
 // column and a vector of 24 bytes (double storage) or 12 (float), built in blocks that

@@ -3,8 +3,9 @@
 // parsing the XML ourselves). LeakSanitizer is told to ignore exactly these two
 // allocation sites in the programs that feed malformed .vtu files to the importer
 // (fuzz_vtu and test_fuzz_replay); every other leak is still reported.
-// scripts/fuzz.sh runs fuzz_vtu without leak detection and with fast unwinding
-// (full stacks cost a factor of ten in speed); the replay test checks the corpus.
+// `scripts/study fuzz` runs fuzz_vtu without leak detection and with fast unwinding
+// (a full stack for every allocation would slow the fuzzer down many times over;
+// docs/verification/fuzzing.md); the replay test checks the corpus.
 //
 //   vtkXMLReader::ReadArrayValues            an array iterator when reading fails
 //   vtkXMLUnstructuredGridReader::ReadPieceData  the cell-types array when the

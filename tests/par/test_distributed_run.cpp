@@ -157,7 +157,7 @@ TEST(DistributedRun, SagRelaxationLandsOnTheOneRankState) {
   EXPECT_EQ(summary_value(dir / "one", "steps"), summary_value(dir / "two", "steps"));
   std::cout << "relaxed sag, " << world().size() << " ranks against 1: final positions differ by " << error
             << " of the largest displacement; steps " << summary_value(dir / "two", "steps") << "\n";
-  EXPECT_EQ(error, 0.0);  // the same bits: docs/verification/distributed.md, "Design"
+  EXPECT_EQ(error, 0.0);  // the same bits: docs/theory/distributed.md
   EXPECT_TRUE(fs::exists(dir / "two" / "frames_000000_1.vtu"));
   EXPECT_TRUE(fs::exists(dir / "two" / "history.csv"));
 }

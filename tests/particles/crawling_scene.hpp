@@ -1,5 +1,5 @@
 // examples/crawling/crawling.toml as the crawling study runs it: the default scene,
-// or with the changes scripts/crawling-study.sh --coarse makes (keep the two in step).
+// or with the changes `scripts/study crawling --coarse` makes (keep the two in step).
 #pragma once
 
 #include "rkpm/scene/scene.hpp"

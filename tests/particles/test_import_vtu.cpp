@@ -242,7 +242,7 @@ std::string compressed_points_file(const std::string& name, const std::string& h
 
 // A compressed array's header (block count, block size, last block size, then
 // each block's compressed size) is trusted by VTK 9.1: 2^32 - 1 blocks made it
-// allocate and zero 16 GB (45 s) for a file of a few hundred bytes, a block size
+// allocate and zero 16 GB for a file of a few hundred bytes, a block size
 // of 0 divided by zero (SIGFPE), no blocks but a last block read a list it never
 // allocated (SIGSEGV), a last block larger than a block or a compressed size
 // beyond the file allocated gigabytes. Each header is checked against the file.

@@ -28,7 +28,7 @@ TEST(Sphere, CountsVolumeAreaNormalsAndClosure) {
       testing::relative_error(testing::sum(cloud.volume), ellipsoid_volume(Vec3::Constant(spec.radius)));
   report("sphere volume relative error", volume_error);
   // The dual cells fill the inscribed polyhedron: an O(h^2) deficit, 0.75 % at
-  // 12 cells across, which is why the default is 16 (see ConvergesAtSecondOrder).
+  // 12 cells across, which is why the default is 16 (see VolumeConvergesAtSecondOrder).
   EXPECT_LE(volume_error, 5e-3);
 
   const double area_error = testing::relative_error(testing::boundary_area_sum(cloud),

@@ -207,7 +207,7 @@ TEST(NestedIteration, TheCarriedPhysicalDisplacementMatchesTheCoarseFieldAtTheFi
   EXPECT_LT(matched, 0.1 * plain_copy);  // measured: 1/31 of it
 }
 
-// The criterion for a faster route: its final displacements agree with a
+// The criterion for a faster route: its final displacements agree with a
 // tight-tolerance FIRE run to 1e-3 of the largest displacement.
 TEST(NestedIteration, NestedLevelsAndMassScalingReachThePlainFireEquilibrium) {
   testing::ScopedThreads one(1);

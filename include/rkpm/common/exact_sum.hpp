@@ -12,9 +12,9 @@
 // exact result once. The same terms in any order, split over any number of threads or
 // ranks, give the same bits.
 //
-// Cost: a few integer operations per term, without a branch on its sign (2.6 ns
-// measured here, against 0.8 for a floating-point addition); the sums that use it run a few
-// times per step over the particles.
+// Cost: a few integer operations per term, without a branch on its sign, a few times a
+// floating-point addition (docs/verification/distributed.md measures it); the sums that
+// use it run a few times per step over the particles, so the step hardly sees it.
 #pragma once
 
 #include <algorithm>

@@ -15,7 +15,7 @@
 //   (the ghosts) on any shape, then renumbered so that each part is contiguous. It
 //   cuts a shell or a sphere into parts with somewhat fewer ghosts, but the renumbering
 //   changes every summation order, so its runs match one process only to round-off
-//   carried along the run (docs/verification/distributed.md). Kept for the partition study.
+//   carried along the run (docs/theory/distributed.md). Kept for the partition study.
 #pragma once
 
 #include "rkpm/common/types.hpp"

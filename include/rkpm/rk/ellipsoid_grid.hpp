@@ -3,9 +3,9 @@
 //
 // Why: a ball query around c must reach a_max + reach, a_max the longest semi-axis near
 // c. In a refined shell that keeps its layers the longest semi-axis is the one across
-// the wall while the supports are short along it: at 1e6 particles (semi-axes about
-// 0.09 um along the wall, 0.25 um across it) the tree's ball held about 750 particles
-// for the 30-65 a point needs, gathered one by one from wherever the tree kept them.
+// the wall while the supports are short along it, so the finer the shell, the more the
+// tree's ball holds beyond the particles a point needs (docs/verification/performance.md
+// counts them on large shells), gathered one by one from wherever the tree kept them.
 //
 // How: an ellipsoid x^T G x <= 1 spans sqrt((G^-1)_ii) along axis i, so a particle
 // whose support reaches a point p with |p - c| <= reach has |X_J,i - c_i| <=
@@ -18,9 +18,10 @@
 // coordinate axis it is as narrow as the supports across the others; on the RBC shell
 // the layers' edges follow the cubed sphere's unit directions, up to about 40 degrees
 // from the wall's normal, and the box is about the ball's. What the grid gains there
-// (docs/verification/performance.md: the 1e6-particle shell's set-up 49 -> 28 s, with the caller's
-// branch-free filter) is its layout: the particles are sorted by bucket (side s, C a
-// multiple of s), one row of buckets along x is one contiguous range, and the supports' metrics and smallest semi-axes are
+// (with the caller's branch-free filter; docs/verification/performance.md measures
+// the set-up) is its layout: the particles
+// are sorted by bucket (side s, C a multiple of s), one row of buckets along x is one
+// contiguous range, and the supports' metrics and smallest semi-axes are
 // copied in that order, so the test over a range streams contiguous arrays (the
 // positions are read through order(): copying them too measured no faster). The
 // metrics are stored in float; a caller's test widens its limit by test_slack(), which

@@ -205,7 +205,8 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
 //
 // The row loops below read the operator through raw pointers and accumulate in locals:
 // with the vectors' members and a Mat3 in memory, the compiler must assume each store
-// may alias them and reloads them per entry, which cost a third of the force pass.
+// may alias them and reloads them per entry, extra loads in the innermost loop of the
+// force pass (docs/verification/performance.md measures the pass).
 //
 // value(I) gives the field at particle I: a stored array (row_gradient) or a sum formed
 // on the fly (the positions X_I + d_I, which are not stored).

@@ -24,9 +24,9 @@
 //
 // Summing across lanes (lane l takes entries l, l + 4, ...) would shorten the gather's
 // dependency chains, but changes F by round-off and with it the path of a relaxation
-// (docs/verification/relaxation.md, "Round-off moves the path"). Measured at 1e5 particles with the
-// vector scatter, it was 5-9 % faster than the kept forms in the native build and
-// 3-7 % slower in the portable one (docs/verification/performance.md).
+// (docs/verification/relaxation.md, "Round-off moves the path"), for a gain that was
+// small in the native build and a loss in the portable one
+// (docs/verification/performance.md measures both).
 #pragma once
 
 #include "rkpm/common/types.hpp"

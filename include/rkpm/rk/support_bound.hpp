@@ -3,8 +3,9 @@
 // A particle I can reach a point within `reach` of c only if |X_I - c| < a_I + reach,
 // so a neighbour query around c needs the radius max a_I + reach over the particles
 // near c. Taking the maximum over the whole cloud instead made every query of a cloud
-// with graded supports (a mapped ball, a shell: largest support 1.2 times the median)
-// return 1.5-1.8 times the points it needed. The grid holds each cell's largest a_I;
+// with graded supports (a mapped ball, a shell) reach as far as its largest support
+// everywhere and return far more points than it needed (docs/verification/performance.md
+// measures the set-up). The grid holds each cell's largest a_I;
 // `near(c, reach)` is the largest over the cells that the cube of half-width
 // a_max + reach around c touches, an upper bound for every particle that can matter.
 #pragma once

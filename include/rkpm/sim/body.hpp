@@ -62,8 +62,9 @@ struct Body {
   particles::Cloud cloud;
   double density = 0.0;                // reference density rho0 [kg/m^3]
 
-  // The RK approximation is not kept: its kd-tree and supports (about 130 B per particle
-  // of a block) are needed only to build operators. approximation(body) rebuilds it, the
+  // The RK approximation is not kept: its kd-tree and supports (a share of the peak
+  // memory per particle that docs/verification/performance.md measures) are needed only
+  // to build operators. approximation(body) rebuilds it, the
   // same bits, for the terms that build operators of their own and for nested iteration.
   rk::RKSettings rk_settings;
   rk::FacetRule cell_quadrature = rk::FacetRule::Corners;  // of the gradient operator and surface terms

@@ -1,7 +1,7 @@
 // Static equilibrium by an inexact Newton method whose linear systems are solved by
 // GMRES with the Jacobian applied as a difference of two force evaluations
 // (Jacobian-free Newton-Krylov, Knoll & Keyes 2004): the relaxation's `relax_finish =
-// "newton_krylov"` (docs/verification/relaxation.md, "Newton-Krylov"). It solves f(d) = 0 for the
+// "newton_krylov"` (docs/theory/relaxation.md, "The Newton-Krylov finish"). It solves f(d) = 0 for the
 // free generalized displacements of every body, f the force after the essential
 // conditions' transformation. A director is not an unknown of its own: in every
 // evaluation the caller carries it from the Newton step's base state to the evaluated
@@ -52,7 +52,8 @@ struct NewtonKrylovHooks {
   // `from` holds each body's coordinates before the update.
   std::function<void(const std::vector<std::vector<Vec3>>& from)> carry;
   // Optional: called after each accepted Newton step with the report so far, so that a
-  // long finish shows where it is (a step of a 1e5-particle shell takes tens of seconds).
+  // long finish shows where it is (a Newton step is many force evaluations, one per GMRES
+  // iteration; docs/verification/relaxation.md measures them).
   std::function<void(const NewtonKrylovReport& so_far)> stepped;
 };
 

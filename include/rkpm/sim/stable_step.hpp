@@ -5,7 +5,8 @@
 // spacing / c (body.hpp, material_stable_dt) only bounds it from the mesh: with
 // smoothed (SCNI) gradients over supports of several spacings the discretisation is
 // softer at its shortest wavelengths than a lattice of springs, and on the red-blood-cell
-// shell 2 / omega_max is 1.94 times spacing / c (docs/verification/relaxation.md).
+// shell 2 / omega_max is well above spacing / c (docs/verification/relaxation.md gives
+// the ratio).
 //
 // omega_max^2 is the dominant eigenvalue of the mass-weighted tangent
 // A = M^-1/2 K M^-1/2, found by power iteration; each product A y is one evaluation of

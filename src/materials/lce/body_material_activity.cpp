@@ -49,7 +49,7 @@ std::vector<int> edge_depth(const particles::Cloud& cloud, const std::vector<std
 // semi-axes shrink by the same length, not offset surfaces, and the surfaces' particles
 // sit an in-plane spacing apart, so the RBC scene's middle layer lay 0.46-0.54 of the
 // way through the wall and an exact-tie test gave 1/2 to 130 of its 6,146 particles, the
-// rest wholly to one half (docs/verification/rbc.md, "The wall's middle layer").
+// rest wholly to one half (docs/verification/rbc.md, "How the driver is placed in a five-layer wall").
 std::vector<double> wall_side(const particles::Cloud& cloud, const std::string& surface) {
   const std::string other = surface == "inner" ? "outer" : "inner";
   std::vector<std::vector<Index>> neighbours(cloud.size());

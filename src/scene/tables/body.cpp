@@ -1,6 +1,7 @@
 // [[body]] and the sub-tables every body may have: director, RK approximation,
 // initial state, boundary conditions. The cloud and the material are variant
-// sections (cloud_generators.cpp, materials.cpp).
+// sections (cloud_generators.cpp; each model's params.cpp under src/materials/,
+// collected by src/materials/catalog_tables.cpp).
 #include "tables/tables.hpp"
 
 #include "rkpm/scene/param_set.hpp"

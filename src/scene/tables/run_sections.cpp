@@ -70,7 +70,7 @@ ParamTable integrator_section() {
                 "step calibrated by 2 / omega_max, the largest natural frequency of the discretisation and "
                 "the terms, measured by power iteration at the start and every 1000 steps (a few tens of "
                 "force evaluations each). On the RBC shell it is 1.9x the wave-speed step; where a term's own "
-                "limit binds (contact) nothing changes (docs/verification/relaxation.md)."),
+                "limit binds (contact) nothing changes (docs/theory/relaxation.md)."),
       ParamSpec::integer("stable_step_interval").at_least(1).at_most(1000).defaults(std::int64_t{10})
           .help("Steps between two estimates of the stable step (each one wave-speed pass over the "
                 "particles). The default follows slow changes of the state; 1 follows a state that "
@@ -96,14 +96,14 @@ ParamTable integrator_section() {
           .help("relax mode: with LCE bodies, converged only when, in addition, the director is at its own "
                 "equilibrium: the largest part of dF/dh across h, over the shear modulus (summary.json's "
                 "director_residual; for s = 2 at rest, 0.01 is a director about 1 degree off), falls below this. 0 = "
-                "the director is not part of the stop (it is reported only; docs/verification/relaxation.md)."),
+                "the director is not part of the stop (it is reported only; docs/theory/relaxation.md)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
       ParamSpec::choice("relax_method", {"fire", "fire2"}).defaults(std::string("fire"))
           .help("relax mode: the FIRE variant. fire: Bitzek et al. 2006. fire2: FIRE 2.0 (Guenole et al. "
                 "2020) with LAMMPS's defaults: 20 downhill steps before the step grows, alpha_start 0.25, a "
                 "step floor of 0.02 dt_max, and an uphill step first moves the particles back by half a step "
-                "(one extra force evaluation per stop). Both reach the same equilibrium; docs/verification/relaxation.md "
+                "(one extra force evaluation per stop). Both reach the same equilibrium; docs/theory/relaxation.md "
                 "compares their cost."),
       ParamSpec::choice("relax_finish", {"none", "newton_krylov"}).defaults(std::string("none"))
           .help("relax mode: what follows FIRE's stop. newton_krylov: Newton steps on the static equilibrium "
@@ -111,7 +111,7 @@ ParamTable integrator_section() {
                 "difference of two force evaluations (Jacobian-free Newton-Krylov) and a backtracking line search "
                 "on the residual, until the residual measure of relax_force_tol falls below finish_force_tol. "
                 "The director is carried with each update (co-rotation and anchoring); LCE bodies with "
-                "mobility > 0 and distributed runs are refused. docs/verification/relaxation.md, \"Newton-Krylov\"."),
+                "mobility > 0 and distributed runs are refused. docs/theory/relaxation.md, \"The Newton-Krylov finish\"."),
       ParamSpec::real("finish_force_tol", "-").greater_than(0).defaults(1e-8)
           .help("relax_finish = \"newton_krylov\": its target, the largest residual force on a particle as a "
                 "stress over the body's shear modulus (the measure of relax_force_tol)."),
@@ -122,7 +122,7 @@ ParamTable integrator_section() {
           .help("relax mode: mass scaling. Particles whose own stable step (spacing over wave speed) is "
                 "below the median over the scene's particles are made heavier until it reaches the median, "
                 "so that a few short edges do not set the step of all (the equilibrium does not depend on "
-                "the masses; docs/verification/relaxation.md says when it pays). Not allowed in dynamic mode, where the "
+                "the masses; docs/theory/relaxation.md says when it pays). Not allowed in dynamic mode, where the "
                 "masses are physical."),
       ParamSpec::boolean("contact_mass_scaling").defaults(false)
           .help("relax mode: a wall_contact term makes the particles it presses heavier, until its own "
@@ -131,7 +131,7 @@ ParamTable integrator_section() {
                 "ledger books the kinetic energy this adds), and the equilibrium does not depend on the "
                 "masses. A raised inertia stays raised "
                 "for the rest of the run. The two-body contact term keeps its own limit. Not allowed in "
-                "dynamic mode, where the masses are physical (docs/verification/relaxation.md)."),
+                "dynamic mode, where the masses are physical (docs/theory/relaxation.md)."),
       ParamSpec::real_list("nested_levels", "-").greater_than(0).less_than(1).defaults(std::vector<double>{})
           .help("relax mode: nested iteration. Resolution factors of coarser clouds, coarsest first "
                 "(0.5 = half the cells along each direction; a shell keeps its layers): the scene is "

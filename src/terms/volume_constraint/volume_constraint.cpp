@@ -36,8 +36,8 @@ VolumeConstraint::VolumeConstraint(Body& body, std::uint32_t surface_bit, double
   //   B_LI = sum_{f in L} Psi_I(X_f) A_f,   C_L = sum_{f in L} X_f (x) A_f.
   // The surface's quadrature is needed only here. It is built and folded in batches of
   // boundary particles, so that its shape functions (several times the folded rows) are
-  // never held for the whole surface: at 1e6 particles of the RBC shell they were the
-  // peak of the set-up's memory (docs/verification/performance.md).
+  // never held for the whole surface: on a large RBC shell they made the peak of the
+  // set-up's memory (docs/verification/performance.md).
   constexpr std::size_t batch = 8192;
   Fold fold{std::vector<Vec3>(body.size(), Vec3::Zero()), std::vector<char>(body.size(), 0), {}};
   row_offset_.push_back(0);
@@ -96,8 +96,9 @@ void VolumeConstraint::fold_facets(const rk::BoundaryQuadrature& q, Fold& fold) 
 
 // One process gathers each particle's push over its rows (add_forces). B is copied in
 // that order, so the gather streams it instead of reading it entry by entry across the
-// rows (which cost 10 % of a step of the 122,890-particle RBC shell); the copy's entry
-// index is then no longer needed. The sums keep their order and bits.
+// rows, a scattered access that was a visible share of an RBC shell's step
+// (docs/verification/relaxation.md measures it); the copy's entry index is then no
+// longer needed. The sums keep their order and bits.
 void VolumeConstraint::gather_by_particle() {
   by_particle_.build(row_offset_, col_, static_cast<Index>(body_.size()));
   B_by_particle_.resize(by_particle_.entry.size());

@@ -13,8 +13,8 @@
 // quadrature of the continuum first variation p (surface integral of du . n da), not the
 // exact gradient of the discrete V above (whose a_f also moves with the smoothed F):
 // the two differ by a discretisation error, 27 % RMS per particle on a 6-cell shell and
-// 18 % on a 12-cell one (tests/sim/test_volume_constraint.cpp), so the energy ledger
-// of a scene with this term closes only to that order.
+// 18 % on a 12-cell one (tests/terms/volume_constraint/test_volume_constraint.cpp), so
+// the energy ledger of a scene with this term closes only to that order.
 // The term is declared per scene ([[term]] type = "volume_constraint"); a body
 // without it has no enclosed fluid at all.
 // Distributed: a rank measures the rows of the cells it owns (the volume is summed over

@@ -40,8 +40,9 @@ WallContact::WallContact(Body& body, const WallContactSettings& settings)
     : body_(body), surface_(checked(settings).surface), lj_{1.0, settings.distance}, pressure_(settings.pressure),
       exclusion2_(settings.exclusion * settings.exclusion),
       // Excluded pairs (neighbours in the reference wall) never interact: they are not
-      // stored. At 1e6 particles of the RBC shell they were nearly all of the 82 million
-      // listed pairs, 1.3 GB (docs/verification/performance.md). Only the rows are read.
+      // stored. Within distance + skin on one wall they are nearly all of the candidates,
+      // so listing them dominated a large shell's memory (docs/verification/performance.md).
+      // Only the rows are read.
       pairs_(settings.distance, settings.skin, [this](Index i, Index j) { return !excluded(i, j); }, false) {
   const std::uint32_t bit = body.cloud.surface_bit(surface_);
   if (bit == 0u)
@@ -156,7 +157,8 @@ double WallContact::stable_dt(const World&) const {
 // are left as they are, so the velocity field stays continuous across the contact (the
 // caller books the kinetic energy this adds). Scaling them down to keep each particle's
 // kinetic energy left the pressed particles lagging their neighbours, and the default
-// RBC run's own cloud was still moving after 3,019 steps, against 1,238.
+// RBC run's own cloud kept moving long after the run with the velocities kept had
+// stopped (docs/verification/relaxation.md compares the two).
 void WallContact::scale_inertia_to(World&, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt) || pairs_.builds() == 0 || pairs_.size() == 0) return;
   const double bound = 4.0 / (dt * dt);  // omega^2 at which 2 / omega = dt

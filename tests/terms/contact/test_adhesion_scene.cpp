@@ -7,7 +7,7 @@
 // contact length s0 follows the substrate's lateral spacing as in the scene
 // (spacing = 1.25 s0), eps keeps the adhesion energy |W(d0)| = 1e-3 J/m^2, and the
 // cell starts 200 nm beyond the equilibrium gap 0.6368 s0. Measured at this
-// resolution (Release, one thread, about 3 s): smallest gap over the run 0.648 s0,
+// resolution: smallest gap over the run 0.648 s0,
 // contact radius 2.63 um (45 particles; 9 within s0 at release), energy error 6.4e-4.
 #include "contact_fixtures.hpp"
 

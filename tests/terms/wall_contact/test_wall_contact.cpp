@@ -250,7 +250,7 @@ TEST(WallContact, ContactMassScalingRaisesTheContactsStep) {
 
 // The same equilibrium with and without contact_mass_scaling: the shell pressed flat
 // (surface pressure and wall contact), relaxed to a tight residual both ways; the final
-// displacements agree to 1e-3 of the largest (the relaxation issue's criterion for a
+// displacements agree to 1e-3 of the largest (the relaxation study's criterion for a
 // faster route), the scaled run made the contact heavier, and its energy ledger, which
 // books the kinetic energy the heavier particles gained, balances as well as the plain
 // run's.
