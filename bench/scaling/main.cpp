@@ -65,8 +65,6 @@ int main(int argc, char** argv) {
   app.add_option("--csv", csv_path, "CSV output");
   app.add_option("--markdown", markdown_path, "markdown output (tables and targets)");
   app.add_option("--command", command, "the command line quoted in the markdown");
-  std::string revision = "unknown";
-  app.add_option("--source-revision", revision, "the source revision measured, quoted in the markdown");
   app.add_option("--rbc-scene", study.measure.rbc_scene, "the RBC scene whose face_cells are refined");
   app.add_option("--support-shape", study.measure.rk.support_shape,
                  "[body.rk] support_shape of every geometry's scene (the shell's example declares none)")
@@ -106,7 +104,7 @@ int main(int argc, char** argv) {
     for (const auto& g : geometries) study.geometries.push_back(bench::parse_geometry(g));
     const scaling::StudyResult result = scaling::run_study(study);
     scaling::write_csv(csv_path, result);
-    scaling::write_markdown(markdown_path, result, rbc, command, revision);
+    scaling::write_markdown(markdown_path, result, rbc, command);
     fmt::print(stderr, "wrote {} and {}\n", csv_path, markdown_path);
   } catch (const std::exception& e) {
     fmt::print(stderr, "rkpm_scaling: {}\n", e.what());

@@ -38,7 +38,7 @@ struct Targets {
 
 void write_csv(const std::string& path, const StudyResult& study);
 void write_markdown(const std::string& path, const StudyResult& study, const RbcRelaxation& rbc,
-                    const std::string& command, const std::string& revision);
+                    const std::string& command);
 
 // Derived quantities, shared by both outputs.
 double bandwidth_fraction(const SizeResult& r, const TriadResult& triad);  // NaN when not measurable

@@ -41,8 +41,10 @@ void ensure_initialised() {
 
 bool is_geo(const std::string& path) { return std::filesystem::path(path).extension() == ".geo"; }
 
-// Opens `path` as the only model; Gmsh reports a file it cannot read by throwing.
-void open_model(const std::string& path) {
+// Opens `path` as the only model; Gmsh reports a file it cannot read by throwing. An
+// untrusted .geo script is screened first: opening it runs it.
+void open_model(const std::string& path, bool trusted) {
+  if (is_geo(path) && !trusted) screen_geo_script(path);
   ensure_initialised();
   gmsh::clear();
   try {
@@ -79,120 +81,160 @@ int corner_nodes(int gmsh_type) {
   }
 }
 
+// Runs one use of Gmsh's API on `path` under the process-wide lock. Gmsh reports its
+// errors by throwing std::string (and, from its C parts, C strings): every kind is
+// turned into a CloudError naming the file, so nothing Gmsh throws reaches the caller
+// as anything else. Gmsh's model is cleared afterwards whatever happened.
+template <class Use>
+auto with_gmsh(const std::string& path, Use use) -> decltype(use()) {
+  std::lock_guard<std::mutex> lock(gmsh_mutex());
+  struct ClearModel {
+    ~ClearModel() {
+      try {
+        gmsh::clear();
+      } catch (...) {  // a failed clear leaves a model the next open replaces
+      }
+    }
+  } clear_model;
+  try {
+    return use();
+  } catch (const CloudError&) {
+    throw;
+  } catch (const std::string& e) {
+    fail(path, "Gmsh: " + e);
+  } catch (const char* e) {
+    fail(path, std::string("Gmsh: ") + (e ? e : "unknown error"));
+  } catch (const std::exception& e) {
+    fail(path, std::string("Gmsh: ") + e.what());
+  } catch (...) {
+    fail(path, "Gmsh failed with an error of unknown type");
+  }
+}
+
 }  // namespace
 
-std::vector<std::string> gmsh_surface_names(const std::string& path) {
-  std::lock_guard<std::mutex> lock(gmsh_mutex());
-  open_model(path);
-  std::vector<std::string> names{"surface"};
-  for (const auto& [name, tag] : named_surfaces()) names.push_back(name);
-  gmsh::clear();
-  return names;
+std::vector<std::string> gmsh_surface_names(const std::string& path, bool trusted) {
+  return with_gmsh(path, [&] {
+    open_model(path, trusted);
+    std::vector<std::string> names{"surface"};
+    for (const auto& [name, tag] : named_surfaces()) names.push_back(name);
+    return names;
+  });
 }
 
 double gmsh_particle_estimate(const GmshImportSpec& spec) {
-  std::lock_guard<std::mutex> lock(gmsh_mutex());
-  open_model(spec.path);
-  double estimate = 0.0;
-  if (is_geo(spec.path)) {
-    double x0, y0, z0, x1, y1, z1;
-    gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-    const double h = spec.mesh_size;
-    estimate = h > 0.0 ? 1.4 * (x1 - x0) * (y1 - y0) * (z1 - z0) / (h * h * h) : 0.0;
-  } else {
-    std::vector<std::size_t> tags;
-    std::vector<double> xyz, uvw;
-    gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
-    estimate = static_cast<double>(tags.size());
-  }
-  gmsh::clear();
-  return estimate;
+  return with_gmsh(spec.path, [&] {
+    open_model(spec.path, spec.trusted);
+    double estimate = 0.0;
+    if (is_geo(spec.path)) {
+      double x0, y0, z0, x1, y1, z1;
+      gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+      // The nodes of a grid of the declared size over the bounding box, with 1.4 for a
+      // tetrahedral mesh's denser nodes: each extent has at least two sheets of nodes,
+      // so a slab thinner than the size still counts its layer of elements, which a
+      // plain volume over h^3 would count as almost none.
+      const double h = spec.mesh_size;
+      const auto sheets = [h](double extent) { return std::max(extent / h, 1.0) + 1.0; };
+      estimate = h > 0.0 ? 1.4 * sheets(x1 - x0) * sheets(y1 - y0) * sheets(z1 - z0) : 0.0;
+    } else {
+      std::vector<std::size_t> tags;
+      std::vector<double> xyz, uvw;
+      gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
+      estimate = static_cast<double>(tags.size());
+    }
+    return estimate;
+  });
 }
 
 Cloud import_gmsh(const GmshImportSpec& spec) {
   const std::string& path = spec.path;
-  std::lock_guard<std::mutex> lock(gmsh_mutex());
-  open_model(path);
-  if (is_geo(path)) {
-    if (!(spec.mesh_size > 0.0)) fail(path, "a .geo file needs a mesh size to be meshed with");
-    gmsh::option::setNumber("Mesh.MeshSizeMax", spec.mesh_size);
-    gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
-    try {
-      gmsh::model::mesh::generate(3);
-    } catch (const std::string& e) {
-      fail(path, "meshing failed: " + e);
-    }
-  }
-
-  std::vector<int> types;
-  std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-  gmsh::model::mesh::getElements(types, element_tags, element_nodes, 3);
-  if (types.empty()) fail(path, "has no volume elements (tetrahedra or hexahedra)");
-
-  // Particles: the corner nodes in order of first use; their ids index cloud.X.
-  std::vector<std::size_t> node_tags;
-  std::vector<double> coords, params;
-  gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
-  std::unordered_map<std::size_t, std::size_t> coord_of;
-  for (std::size_t k = 0; k < node_tags.size(); ++k) coord_of[node_tags[k]] = k;
-  std::unordered_map<std::size_t, std::int32_t> particle_of;
-  Cloud cloud;
-  cloud.name = path;
-  std::vector<std::size_t> gmsh_tag_of_element;
-  for (std::size_t t = 0; t < types.size(); ++t) {
-    const int corners = corner_nodes(types[t]);
-    std::string type_name;
-    int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
-    std::vector<double> local;
-    gmsh::model::mesh::getElementProperties(types[t], type_name, dim, order, n_nodes, local, n_primary);
-    if (corners == 0)
-      fail(path, "element " + std::to_string(element_tags[t].front()) + " is a " + type_name +
-                     ": only tetrahedra and hexahedra (first or second order) can be imported");
-    for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
-      std::int32_t ids[8];
-      for (int c = 0; c < corners; ++c) {
-        const std::size_t tag = element_nodes[t][e * static_cast<std::size_t>(n_nodes) + c];
-        auto [it, inserted] = particle_of.try_emplace(tag, static_cast<std::int32_t>(cloud.X.size()));
-        if (inserted) {
-          const std::size_t k = coord_of.at(tag);
-          cloud.X.emplace_back(spec.scale * coords[3 * k], spec.scale * coords[3 * k + 1], spec.scale * coords[3 * k + 2]);
-        }
-        ids[c] = it->second;
+  return with_gmsh(path, [&] {
+    open_model(path, spec.trusted);
+    if (is_geo(path)) {
+      if (!(spec.mesh_size > 0.0)) fail(path, "a .geo file needs a mesh size to be meshed with");
+      gmsh::option::setNumber("Mesh.MeshSizeMax", spec.mesh_size);
+      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+      // Sizes given at the points of an untrusted script are ignored: the scene's
+      // mesh_size, which the pre-flight counts with, is the size (Gmsh's options are
+      // process-wide, so a trusted file sets its default back).
+      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", spec.trusted ? 1 : 0);
+      try {
+        gmsh::model::mesh::generate(3);
+      } catch (const std::string& e) {
+        fail(path, "meshing failed: " + e);
       }
-      cloud.mesh.add_element(corners == 4 ? ElementType::Tet4 : ElementType::Hex8, ids);
-      gmsh_tag_of_element.push_back(element_tags[t][e]);
     }
-  }
 
-  // Inverted or degenerate elements, named by their Gmsh tag, before finalize_cloud.
-  int inverted = 0, first = -1;
-  for (int e = 0; e < cloud.mesh.n_elements(); ++e)
-    if (!(element_min_scaled_jacobian(cloud, e) > 0.0) && inverted++ == 0) first = e;
-  if (inverted > 0)
-    fail(path, std::to_string(inverted) + " of " + std::to_string(cloud.mesh.n_elements()) +
-                   " volume elements are inverted or degenerate (first: element " +
-                   std::to_string(gmsh_tag_of_element[first]) + "); expected Gmsh node order with positive volume");
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
+    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 3);
+    if (types.empty()) fail(path, "has no volume elements (tetrahedra or hexahedra)");
 
-  // Surfaces: bit 0 is the whole boundary, bit k the k-th named physical surface.
-  const auto named = named_surfaces();
-  if (named.size() + 1 > 32) fail(path, "has more than 31 physical surfaces");
-  cloud.surface_names = {"surface"};
-  for (const auto& [name, tag] : named) cloud.surface_names.push_back(name);
-  finalize_cloud(cloud);
-  for (const std::int32_t p : cloud.boundary_particles) cloud.surface_mask[p] |= 1u;
-  for (std::size_t k = 0; k < named.size(); ++k) {
-    std::vector<int> entities;
-    gmsh::model::getEntitiesForPhysicalGroup(2, named[k].second, entities);
-    for (int entity : entities) {
-      std::vector<std::size_t> tags;
-      std::vector<double> xyz, uvw;
-      gmsh::model::mesh::getNodes(tags, xyz, uvw, 2, entity, true, false);
-      for (std::size_t tag : tags)
-        if (auto it = particle_of.find(tag); it != particle_of.end()) cloud.surface_mask[it->second] |= 1u << (k + 1);
+    // Particles: the corner nodes in order of first use; their ids index cloud.X.
+    std::vector<std::size_t> node_tags;
+    std::vector<double> coords, params;
+    gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
+    std::unordered_map<std::size_t, std::size_t> coord_of;
+    for (std::size_t k = 0; k < node_tags.size(); ++k) coord_of[node_tags[k]] = k;
+    std::unordered_map<std::size_t, std::int32_t> particle_of;
+    Cloud cloud;
+    cloud.name = path;
+    std::vector<std::size_t> gmsh_tag_of_element;
+    for (std::size_t t = 0; t < types.size(); ++t) {
+      const int corners = corner_nodes(types[t]);
+      std::string type_name;
+      int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
+      std::vector<double> local;
+      gmsh::model::mesh::getElementProperties(types[t], type_name, dim, order, n_nodes, local, n_primary);
+      if (corners == 0)
+        fail(path, "element " + std::to_string(element_tags[t].front()) + " is a " + type_name +
+                       ": only tetrahedra and hexahedra (first or second order) can be imported");
+      for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
+        std::int32_t ids[8];
+        for (int c = 0; c < corners; ++c) {
+          const std::size_t tag = element_nodes[t][e * static_cast<std::size_t>(n_nodes) + c];
+          auto [it, inserted] = particle_of.try_emplace(tag, static_cast<std::int32_t>(cloud.X.size()));
+          if (inserted) {
+            const std::size_t k = coord_of.at(tag);
+            cloud.X.emplace_back(spec.scale * coords[3 * k], spec.scale * coords[3 * k + 1],
+                                 spec.scale * coords[3 * k + 2]);
+          }
+          ids[c] = it->second;
+        }
+        cloud.mesh.add_element(corners == 4 ? ElementType::Tet4 : ElementType::Hex8, ids);
+        gmsh_tag_of_element.push_back(element_tags[t][e]);
+      }
     }
-  }
-  gmsh::clear();
-  return cloud;
+
+    // Inverted or degenerate elements, named by their Gmsh tag, before finalize_cloud.
+    int inverted = 0, first = -1;
+    for (int e = 0; e < cloud.mesh.n_elements(); ++e)
+      if (!(element_min_scaled_jacobian(cloud, e) > 0.0) && inverted++ == 0) first = e;
+    if (inverted > 0)
+      fail(path, std::to_string(inverted) + " of " + std::to_string(cloud.mesh.n_elements()) +
+                     " volume elements are inverted or degenerate (first: element " +
+                     std::to_string(gmsh_tag_of_element[first]) + "); expected Gmsh node order with positive volume");
+
+    // Surfaces: bit 0 is the whole boundary, bit k the k-th named physical surface.
+    const auto named = named_surfaces();
+    if (named.size() + 1 > 32) fail(path, "has more than 31 physical surfaces");
+    cloud.surface_names = {"surface"};
+    for (const auto& [name, tag] : named) cloud.surface_names.push_back(name);
+    finalize_cloud(cloud);
+    for (const std::int32_t p : cloud.boundary_particles) cloud.surface_mask[p] |= 1u;
+    for (std::size_t k = 0; k < named.size(); ++k) {
+      std::vector<int> entities;
+      gmsh::model::getEntitiesForPhysicalGroup(2, named[k].second, entities);
+      for (int entity : entities) {
+        std::vector<std::size_t> tags;
+        std::vector<double> xyz, uvw;
+        gmsh::model::mesh::getNodes(tags, xyz, uvw, 2, entity, true, false);
+        for (std::size_t tag : tags)
+          if (auto it = particle_of.find(tag); it != particle_of.end()) cloud.surface_mask[it->second] |= 1u << (k + 1);
+      }
+    }
+    return cloud;
+  });
 }
 
 }  // namespace rkpm::particles

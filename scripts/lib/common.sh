@@ -41,7 +41,8 @@ rkpm_program() {
     [ -x "$RKPM_BIN" ] || rkpm_die "RKPM_BIN=$RKPM_BIN is not an executable"
     realpath "$RKPM_BIN"
   else
-    rkpm_build rkpm >&2
+    # errexit does not reach into a command substitution: fail here, not with a stale binary.
+    rkpm_build rkpm >&2 || rkpm_die "building rkpm in $rkpm_build_dir failed"
     echo "$(cd "$rkpm_build_dir" && pwd)/src/app/rkpm"
   fi
 }

@@ -46,9 +46,6 @@ program=$build/bench/rkpm_scaling
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 command_text="scripts/study scaling --max $max${extra[*]:+ ${extra[*]}}"
-# What was measured: the commit, and whether the working tree differed from it.
-revision=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
-git -C "$here" diff --quiet HEAD -- src include particles 2>/dev/null || revision+=" with uncommitted changes"
 
 # The default RBC relaxation, as command (a) of the README runs it but with 2 threads.
 rbc_args=()
@@ -70,7 +67,7 @@ fi
 csv=$out/perf-scaling.csv
 table=$out/perf-scaling.md
 "$program" --max "$max" --csv "$csv" --markdown "$table" --rbc-scene "$here/examples/rbc/rbc.toml" \
-  --command "$command_text" --source-revision "$revision" "${rbc_args[@]}" "${extra[@]}"
+  --command "$command_text" "${rbc_args[@]}" "${extra[@]}"
 
 
 gnuplot <<GNUPLOT

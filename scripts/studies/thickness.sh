@@ -9,6 +9,8 @@
 #   --coarse: 0.3 and 0.5 um at face_cells 12 (about a minute); docs untouched.
 #   THICKNESSES_UM default 0.3 0.4 0.5 0.75 (the seed gives 0.5 and "about 0.3").
 #   RKPM_FACE_CELLS=N runs the shell at face_cells N instead of the scene's.
+#   RKPM_MAX_STEPS caps each run's steps on its own cloud (default 10000): a wall that
+#   does not come to rest within it is reported as not converged.
 #   A directory that already holds a summary.json is kept, so the study can be
 #   completed in several sittings.
 set -euo pipefail
@@ -36,6 +38,7 @@ for t in "${thicknesses[@]}"; do
   tags+=("$tag")
   [ -f "$out/$tag/summary.json" ] && { echo "$tag: done before, kept"; continue; }
   sed -e "s/^thickness = .*/thickness = ${t}e-6/" -e "s/^name = \"rbc\"/name = \"rbc_$tag\"/" \
+      -e "s/^max_steps = .*/max_steps = ${RKPM_MAX_STEPS:-10000}/" \
       ${RKPM_FACE_CELLS:+-e "s/^face_cells = .*/face_cells = $RKPM_FACE_CELLS/"} \
       "$here/examples/rbc/rbc.toml" > "$out/$tag.toml"
   echo "$tag: running"

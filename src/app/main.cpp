@@ -13,14 +13,31 @@
 #include <CLI/CLI.hpp>
 #include <omp.h>
 
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <thread>
 
 #ifndef RKPM_VERSION
 #define RKPM_VERSION "unknown"
 #endif
 
-int main(int argc, char** argv) {
+namespace {
+
+// The most OpenMP threads a run may ask for: the runtime's own limit, and at most 8 per
+// hardware thread (more never speeds a step up, and thousands exhaust the threads or the
+// stacks a process may have: libgomp then fails or crashes inside its thread start).
+int thread_ceiling() {
+  const long hardware = std::max(1u, std::thread::hardware_concurrency());
+  return static_cast<int>(std::min<long>(omp_get_thread_limit(), 8 * hardware));
+}
+
+int run_command(int argc, char** argv) {
   rkpm::par::Session mpi(argc, argv);  // joins the run's ranks under mpirun; nothing otherwise
   CLI::App app{"rkpm: reproducing-kernel particle simulator for cell mechanics (active liquid-crystal "
                "elastomer cells on Mooney-Rivlin substrates)"};
@@ -30,14 +47,13 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "Run a scene file; writes frames (VTU + PVD), checkpoints and summary.json");
   std::string scene_path, out_dir, restart;
   int threads = 0;
-  long long max_steps = 0;
+  std::string max_steps_text;
   bool quiet = false, allow_unstable = false;
   run->add_option("scene", scene_path, "Scene file (TOML)")->required();
   run->add_option("--out", out_dir, "Output directory (default: out/<scene name>)");
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
   run->add_option("--restart", restart, "Resume from a checkpoint written by an earlier run of the same scene");
-  run->add_option("--max-steps", max_steps, "Stop after this many steps (a partial run; exit code 0)")
-      ->check(CLI::NonNegativeNumber);
+  run->add_option("--max-steps", max_steps_text, "Stop after this many steps (a partial run; exit code 0)");
   run->add_flag("--quiet", quiet, "No progress line");
   std::string memory_limit;
   bool dry_run = false;
@@ -100,6 +116,25 @@ int main(int argc, char** argv) {
     if (rkpm::par::Comm::world().root()) std::cerr << "error: " << e.what() << "\n";
     return rkpm::sim::kBadInput;
   }
+  // Read as text and converted here: CLI11 would saturate a number beyond the integer
+  // range instead of refusing it.
+  std::int64_t max_steps = 0;
+  if (!max_steps_text.empty()) {
+    const char* end = max_steps_text.data() + max_steps_text.size();
+    const auto [stop, error] = std::from_chars(max_steps_text.data(), end, max_steps);
+    if (error != std::errc() || stop != end || max_steps < 0) {
+      if (rkpm::par::Comm::world().root())
+        std::cerr << "error: --max-steps " << max_steps_text << ": expected a whole number from 0 to "
+                  << std::numeric_limits<std::int64_t>::max() << "\n";
+      return rkpm::sim::kBadInput;
+    }
+  }
+  if (threads > thread_ceiling()) {
+    if (rkpm::par::Comm::world().root())
+      std::cerr << "error: --threads " << threads << ": more than this machine allows (at most " << thread_ceiling()
+                << ": 8 per hardware thread, within the OpenMP thread limit)\n";
+    return rkpm::sim::kBadInput;
+  }
   if (threads > 0) omp_set_num_threads(threads);
   rkpm::sim::RunOptions options;
   options.out_dir = out_dir.empty() ? std::filesystem::path("out") / scene.scene.text("name") : std::filesystem::path(out_dir);
@@ -121,9 +156,9 @@ int main(int argc, char** argv) {
     std::ostream& out = speaks ? std::cout : silent;
     std::ostream& err = speaks ? std::cerr : silent;
     const auto& world = rkpm::par::Comm::world();
-    const auto estimate = rkpm::sim::estimate_run(scene, world.size(), world.node_size());
-    rkpm::sim::print_estimate(out, scene, estimate, options.limits, options.out_dir);
     try {
+      const auto estimate = rkpm::sim::estimate_run(scene, world.size(), world.node_size());
+      rkpm::sim::print_estimate(out, scene, estimate, options.limits, options.out_dir);
       // Without a set-up the step is unknown: the disk must hold at least the first and last frames.
       rkpm::sim::check_memory(estimate, options.limits);
       rkpm::sim::check_disk(scene, estimate, rkpm::sim::frames_expected(scene, estimate, std::nullopt), options.limits,
@@ -145,4 +180,35 @@ int main(int argc, char** argv) {
     if (comm.parallel()) comm.abort(rkpm::sim::kInternalError);
     return rkpm::sim::kInternalError;
   }
+}
+
+// The last words of a process that met an exception nothing else caught (one thrown on
+// an OpenMP thread cannot reach main's handlers): a message and exit 1, never
+// std::terminate's abort.
+[[noreturn]] void last_words() {
+  std::cerr << "error: internal error: ";
+  try {
+    if (const auto e = std::current_exception()) std::rethrow_exception(e);
+    std::cerr << "terminated without an exception";
+  } catch (const std::exception& e) {
+    std::cerr << e.what();
+  } catch (...) {
+    std::cerr << "an exception of unknown type";
+  }
+  std::cerr << " (please report it with the scene)\n";
+  std::_Exit(rkpm::sim::kInternalError);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::set_terminate(last_words);
+  try {
+    return run_command(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "error: internal error: " << e.what() << " (please report it with the scene)\n";
+  } catch (...) {
+    std::cerr << "error: internal error: an exception of unknown type (please report it with the scene)\n";
+  }
+  return rkpm::sim::kInternalError;
 }

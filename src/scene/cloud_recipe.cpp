@@ -34,8 +34,9 @@ CloudRecipe cloud_recipe(const BodySpec& body) {
     return spec;
   }
   if (generator == "vtu") return VtuImport{body.cloud_file, c.real("scale")};
-  if (generator == "gmsh") return particles::GmshImportSpec{body.cloud_file, c.real("scale"),
-                                                            c.has("mesh_size") ? c.real("mesh_size") : 0.0};
+  if (generator == "gmsh")
+    return particles::GmshImportSpec{body.cloud_file, c.real("scale"), c.has("mesh_size") ? c.real("mesh_size") : 0.0,
+                                     c.flag("trusted")};
   throw std::logic_error("cloud_recipe: generator \"" + generator + "\" is registered but has no recipe");
 }
 

@@ -197,7 +197,7 @@ class Loader {
     if (extension == ".geo" && !c.has("mesh_size"))
       throw c.error("file", "a mesh_size key beside a .geo file: the largest element edge to mesh it with");
     try {
-      spec.file_surfaces = particles::gmsh_surface_names(spec.cloud_file);
+      spec.file_surfaces = particles::gmsh_surface_names(spec.cloud_file, c.flag("trusted"));
     } catch (const particles::CloudError& e) {
       throw c.error("file", std::string("a file Gmsh can read: ") + e.what());
     }

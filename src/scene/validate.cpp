@@ -118,6 +118,21 @@ class Converter {
   const ParamSpec& spec_;
 };
 
+// A subnormal double (non-zero, below 2.2e-308 in size) has lost its precision, and
+// whatever divides by it overflows (a density of 5e-324 gives zero masses and infinite
+// accelerations): such values are refused everywhere, in lists too.
+bool holds_subnormal(const toml::node& node) {
+  if (const auto* d = node.as_floating_point()) {
+    const double v = d->get();
+    return v != 0.0 && std::abs(v) < std::numeric_limits<double>::min();
+  }
+  if (const auto* array = node.as_array()) {
+    for (const auto& item : *array)
+      if (holds_subnormal(item)) return true;
+  }
+  return false;
+}
+
 const ParamSpec* find_spec(const std::vector<const ParamTable*>& tables, std::string_view name) {
   for (const ParamTable* table : tables) {
     if (const ParamSpec* spec = table->find(name)) return spec;
@@ -154,6 +169,10 @@ ParamSet validate_table(const toml::table& toml_table, std::vector<const ParamTa
                                                   tables.back()->selector_value);
       throw SceneError(site.file, line_of(node), site.section, name, toml_text(node),
                        fmt::format("a known key{}: {}", scope, list_with_suggestion(name, known, false)));
+    }
+    if (holds_subnormal(node)) {
+      throw SceneError(site.file, line_of(node), site.section, name, toml_text(node),
+                       "0 or a number of at least 2.2e-308 in size (a subnormal number has lost its precision)");
     }
     const auto value = Converter(*spec)(node);
     if (!value) {

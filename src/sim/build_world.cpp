@@ -57,7 +57,7 @@ DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::
   const Vec3 centre = centroid(body);
   const std::string initial = p.choice("initial");
   if (initial == "fixed") {
-    const Vec3 h = p.vec3("vector").normalized();
+    const Vec3 h = p.vec3("vector").stableNormalized();  // finite for any non-zero components
     std::fill(dir.h.begin(), dir.h.end(), h);
   } else if (initial == "radial") {
     // A particle at the centre gets e_z. "At the centre" allows for the centroid's

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -253,6 +254,14 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
     world.step = r.integer("step");
     clock.next_output = r.real("clock.next_output");
     clock.frames = r.integer("clock.frames");
+    // A run only counts forward from zero, and its clock is finite: anything else is a
+    // damaged or forged file, which would otherwise loop or overflow the step counter.
+    if (world.step < 0) fail(fmt::format("its step is {}, expected 0 or more", world.step));
+    if (clock.frames < 0) fail(fmt::format("its frame count is {}, expected 0 or more", clock.frames));
+    if (!std::isfinite(world.time) || world.time < 0.0)
+      fail(fmt::format("its time is {}, expected a finite value of 0 or more", world.time));
+    if (!std::isfinite(clock.next_output))
+      fail(fmt::format("its next output time is {}, expected a finite value", clock.next_output));
     for (auto& b : world.bodies) {
       const std::string p = body_prefix(*b);
       b->d = r.vectors(p + "d", b->size());

@@ -1,12 +1,15 @@
 #include "rkpm/sim/history.hpp"
 
 #include "rkpm/io/atomic_file.hpp"
+#include "rkpm/io/frame.hpp"
 #include "rkpm/io/json.hpp"
 
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <algorithm>
 #include <iterator>
+#include <string_view>
 
 namespace rkpm::sim {
 
@@ -44,18 +47,37 @@ void keep_rows_up_to(const std::filesystem::path& path, std::int64_t step) {
 }
 }  // namespace
 
+// A row is written only when every value in it is finite: an infinity or a NaN is the
+// simulation's failure, reported as such (the run stops with a diagnosis, exit 3)
+// instead of a history that ends in "inf".
+void History::refuse_non_finite(const std::string& row) const {
+  std::size_t k = 0, begin = 0;
+  while (begin <= row.size()) {
+    const std::size_t end = std::min(row.find(',', begin), row.size());
+    const std::string_view value(row.data() + begin, end - begin);
+    if (value.find("inf") != std::string_view::npos || value.find("nan") != std::string_view::npos)
+      throw io::NonFiniteValue(fmt::format("history.csv: {} = {}", k < columns_.size() ? columns_[k] : "a column",
+                                           std::string(value)));
+    ++k;
+    begin = end + 1;
+  }
+}
+
 History::History(const std::filesystem::path& path, const World& world, const Body* shape_body, bool resume)
     : writes_(world.comm->root()), path_(path), shape_body_(shape_body) {
   if (!writes_) return;
+  columns_ = {"step", "time", "dt", "kinetic", "strain", "interface", "external_work", "active_work",
+              "director_work", "dissipated", "energy_error", "residual", "min_J"};
+  for (const auto& t : world.terms)
+    for (const auto& column : t->history_columns()) columns_.push_back(column);
+  if (shape_body_)
+    for (const char* column : {"volume", "area", "reduced_volume", "h_min_over_h_max", "inner_gap_min"})
+      columns_.push_back(column);
   if (resume) keep_rows_up_to(path, world.step);
   out_.open(path, resume ? std::ios::app : std::ios::trunc);
   if (!out_) throw std::runtime_error(fmt::format("cannot open '{}' for writing", path.string()));
   if (resume) return;
-  out_ << "step,time,dt,kinetic,strain,interface,external_work,active_work,director_work,dissipated,energy_error,residual,"
-          "min_J";
-  for (const auto& t : world.terms)
-    for (const auto& column : t->history_columns()) out_ << "," << column;
-  if (shape_body_) out_ << ",volume,area,reduced_volume,h_min_over_h_max,inner_gap_min";
+  for (std::size_t k = 0; k < columns_.size(); ++k) out_ << (k ? "," : "") << columns_[k];
   out_ << "\n";
 }
 
@@ -76,10 +98,13 @@ void History::record(const World& world, Integrator& integrator) {
     }
   }
   if (!writes_) return;
-  out_ << fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
-                      world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
-                      e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J());
-  out_ << term_values << shape_values << "\n";
+  const std::string row =
+      fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
+                  world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
+                  e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J()) +
+      term_values + shape_values;
+  refuse_non_finite(row);
+  out_ << row << "\n";
   out_.flush();
   if (!out_) throw std::runtime_error(fmt::format("failed writing '{}' (disk full?)", path_.string()));
 }

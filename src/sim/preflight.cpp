@@ -135,7 +135,11 @@ BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
     // A Gmsh file: its nodes (.msh) or a bound from its bounding box and mesh size
     // (.geo); spacing unknown, as for a .vtu below.
     const auto recipe = std::get<particles::GmshImportSpec>(scene::cloud_recipe(spec));
-    e.particles = particles::gmsh_particle_estimate(recipe);
+    try {
+      e.particles = particles::gmsh_particle_estimate(recipe);
+    } catch (const particles::CloudError& error) {  // a file Gmsh cannot read is bad input
+      throw PreflightError(fmt::format("{}: {}", key_at(c, "file"), error.what()));
+    }
     e.elements = 6.0 * e.particles;
     grid.spacing = Vec3::Ones();
     grid.extent = Vec3::Constant(std::numeric_limits<double>::infinity());

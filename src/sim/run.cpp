@@ -135,9 +135,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   // and what the scene will cost is checked before anything large is allocated.
   // Each rank reads its own available memory: the verdict is agreed on, so that no rank
   // goes on to wait for one that stopped.
-  const RunEstimate estimate = estimate_run(scene, comm.size(), comm.node_size());
+  RunEstimate estimate;
   std::string refusal;
   try {
+    estimate = estimate_run(scene, comm.size(), comm.node_size());
     check_memory(estimate, options.limits);
   } catch (const PreflightError& e) {
     refusal = e.what();
@@ -355,7 +356,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
     code = kUnstable;
   } catch (const io::NonFiniteValue& e) {
     status = "unstable";
-    diagnosis = std::string("a non-finite value reached the output: ") + e.what();
+    diagnosis = fmt::format("a non-finite value reached the output at step {} (t = {:.6g} s): {}", world->step,
+                            world->time, e.what());
     code = kUnstable;
   } catch (const OutputFailed& e) {
     status = "output failed";

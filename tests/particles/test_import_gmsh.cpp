@@ -49,7 +49,8 @@ std::string two_tets(const std::string& tets = "2 4 2 2 1 1 2 3 4\n3 4 2 2 1 2 3
 }
 
 TEST(ImportGmsh, AHexahedralGeoBecomesHexahedraWithItsPhysicalSurface) {
-  const Cloud c = import_gmsh({write_file("hex.geo", kHexBox), 1e-6, 1.0});
+  // Transfinite meshing is refused in an untrusted script: this one is the test's own.
+  const Cloud c = import_gmsh({write_file("hex.geo", kHexBox), 1e-6, 1.0, true});
   ASSERT_EQ(c.size(), 27u);
   EXPECT_EQ(c.mesh.n_elements(), 8);
   for (int e = 0; e < c.mesh.n_elements(); ++e) EXPECT_EQ(c.mesh.type[e], ElementType::Hex8);
@@ -67,8 +68,9 @@ TEST(ImportGmsh, AHexahedralGeoBecomesHexahedraWithItsPhysicalSurface) {
 }
 
 TEST(ImportGmsh, SecondOrderTetrahedraKeepOnlyTheirCorners) {
-  const Cloud first = import_gmsh({write_file("tet1.geo", tet_box(1)), 1.0, 0.5});
-  const Cloud second = import_gmsh({write_file("tet2.geo", tet_box(2)), 1.0, 0.5});
+  // Mesh.ElementOrder is refused in an untrusted script: these are the test's own.
+  const Cloud first = import_gmsh({write_file("tet1.geo", tet_box(1)), 1.0, 0.5, true});
+  const Cloud second = import_gmsh({write_file("tet2.geo", tet_box(2)), 1.0, 0.5, true});
   EXPECT_EQ(second.size(), first.size()) << "the mid-edge nodes of a second-order mesh are not particles";
   EXPECT_EQ(second.mesh.n_elements(), first.mesh.n_elements());
   EXPECT_GT(first.size(), 50u);
@@ -122,7 +124,69 @@ TEST(ImportGmsh, BadFilesAreRefusedNamingTheFileAndElement) {
                              "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n"),
                   1.0, 0.0},
                  {"has no volume elements"});
-  expect_refused({write_file("no_size.geo", tet_box(1)), 1.0, 0.0}, {"a .geo file needs a mesh size"});
+  expect_refused({write_file("no_size.geo", tet_box(1)), 1.0, 0.0, true}, {"a .geo file needs a mesh size"});
+}
+
+// Scripts that define no entity make Gmsh throw a std::string from its bounding box and
+// meshing calls: each use of the API turns it into a CloudError naming the file.
+TEST(ImportGmsh, AGeoWithoutEntitiesIsRefusedNotACrash) {
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"empty.geo", ""},
+           {"comment.geo", "// nothing but a comment\n"},
+           {"nothing_left.geo", "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+                                "Box(2) = {-1, -1, -1, 3, 3, 3};\n"
+                                "BooleanDifference(3) = { Volume{1}; Delete; }{ Volume{2}; Delete; };\n"}}) {
+    const std::string path = write_file(name, text);
+    EXPECT_THROW(gmsh_particle_estimate({path, 1.0, 0.5}), CloudError) << name;
+    expect_refused({path, 1.0, 0.5}, {});
+  }
+}
+
+// An untrusted .geo is screened before Gmsh runs it: commands that act outside the
+// geometry are refused naming the file, the line and the word; the same words in
+// comments and strings, and a trusted file, pass the screen.
+TEST(ImportGmsh, AnUntrustedGeoThatActsOutsideItsGeometryIsRefused) {
+  const std::string box = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n";
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"SystemCall \"touch pwned\";\n", "line 3: 'SystemCall'"},
+      {"Exit;\n", "line 3: 'Exit'"},
+      {"For i In {1:1000000000}\nEndFor\n", "line 3: 'For'"},
+      {"While (1)\nEndWhile\n", "line 3: 'While'"},
+      {"Mesh.MeshSizeFactor = 1e-3;\n", "line 3: 'Mesh.MeshSizeFactor'"},
+      {"Include \"other.geo\";\n", "line 3: 'Include'"},
+      {"/* a\nlong comment */ Sleep 100;\n", "line 4: 'Sleep'"},
+  };
+  for (const auto& [command, message] : refused) {
+    const std::string path = write_file("untrusted.geo", box + command);
+    try {
+      screen_geo_script(path);
+      ADD_FAILURE() << "accepted: " << command;
+    } catch (const CloudError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("Gmsh file '" + path + "' " + message), std::string::npos) << what;
+      EXPECT_NE(what.find("trusted = true"), std::string::npos) << what;
+    }
+    expect_refused({path, 1.0, 0.5}, {message});  // the import screens it too
+  }
+  const std::string harmless = write_file("harmless.geo", box + "// SystemCall \"x\"; Exit;\n"
+                                                                  "Printed = 1; // a name that only starts like one\n"
+                                                                  "Physical Surface(\"Exit\") = {1};\n");
+  EXPECT_NO_THROW(screen_geo_script(harmless));
+  EXPECT_EQ(import_gmsh({harmless, 1.0, 0.5}).surface_names, (std::vector<std::string>{"surface", "Exit"}));
+  EXPECT_NO_THROW(screen_geo_script(std::string(RKPM_SOURCE_DIR) + "/examples/spread_cell/spread_cell.geo"));
+  // A trusted script runs as written (Mesh.ElementOrder here).
+  EXPECT_GT(import_gmsh({write_file("trusted.geo", tet_box(2)), 1.0, 0.5, true}).size(), 0u);
+}
+
+// A slab far thinner than the mesh size still gets a layer of elements through it: the
+// estimate counts at least one cell per extent, and bounds what the mesher makes.
+TEST(ImportGmsh, TheGeoEstimateBoundsAThinSlab) {
+  const std::string path =
+      write_file("slab.geo", "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 10, 10, 0.01};\n");
+  const double estimate = gmsh_particle_estimate({path, 1.0, 0.5});
+  const Cloud c = import_gmsh({path, 1.0, 0.5});
+  EXPECT_GE(estimate, static_cast<double>(c.size())) << "the pre-flight under-counted the mesh";
+  EXPECT_LT(estimate, 20.0 * static_cast<double>(c.size())) << "the estimate is no longer a bound worth the name";
 }
 
 }  // namespace

@@ -177,6 +177,11 @@ std::vector<Malformed> malformed_scenes() {
        "relax_finish = \"newton_krylov\""},
       {"unknown finish", replaced(kBase, "t_end = 1.0\n", "mode = \"relax\"\nrelax_finish = \"newton\"\n"),
        "bad.toml:5: [integrator] relax_finish = \"newton\": expected one of"},
+      // --- values that keep arithmetic finite ----------------------------------------
+      {"subnormal density", replaced(kBase, "name = \"cell\"\n", "name = \"cell\"\ndensity = 5e-324\n"),
+       "bad.toml:7: [body] density = 5e-324: expected 0 or a number of at least 2.2e-308 in size"},
+      {"subnormal item of a list", replaced(kBase, "size = [1, 1, 1]", "size = [1, 1e-310, 1]"),
+       "bad.toml:9: [body.cloud] size = [1, 1e-310, 1]: expected 0 or a number of at least 2.2e-308 in size"},
       {"vtu cloud whose file does not exist",
        replaced(kBase, kBlockCloud, "generator = \"vtu\"\nfile = \"meshes/none.vtu\""),
        "bad.toml:9: [body.cloud] file = \"meshes/none.vtu\": expected an existing file (resolved to meshes/none.vtu)"},

@@ -13,6 +13,8 @@
 
 #include <cstdio>
 #include <cstring>
+#include <functional>
+#include <limits>
 #include <sstream>
 
 namespace rkpm::sim {
@@ -220,7 +222,9 @@ TEST(Checkpoint, AnotherFormatVersionIsRefusedWithExitCode2) {
 
 // The scene digest is not the only guard: a world of the same scene digest but other
 // particle counts, bodies or terms is refused by the reader itself, naming what differs.
-std::string read_into(const std::string& written_toml, const std::string& read_toml, const fs::path& file) {
+// `forge` may alter the written world and clock before they are written.
+std::string read_into(const std::string& written_toml, const std::string& read_toml, const fs::path& file,
+                      const std::function<void(World&, RunClock&)>& forge = {}) {
   testing::ScopedThreads one(1);
   constexpr std::uint64_t kDigest = 0x1234;
   {
@@ -228,7 +232,9 @@ std::string read_into(const std::string& written_toml, const std::string& read_t
     Integrator integrator(*sw.world, sw.settings);
     integrator.initialize();
     integrator.step();
-    write_checkpoint(file, *sw.world, integrator, RunClock{}, kDigest);
+    RunClock clock;
+    if (forge) forge(*sw.world, clock);
+    write_checkpoint(file, *sw.world, integrator, clock, kDigest);
   }
   auto sw = testing::build_from_text(read_toml);
   Integrator integrator(*sw.world, sw.settings);
@@ -254,6 +260,24 @@ TEST(Checkpoint, AnotherParticleCountBodyListOrTermListIsNamed) {
   EXPECT_EQ(read_into(cube(), cube() + kGravity, file),
             prefix + "the terms differ: the checkpoint has none, the scene has body_force");
   EXPECT_EQ(read_into(cube(), cube(), file), "no error");
+  fs::remove_all(dir);
+}
+
+// A damaged or forged clock would loop or overflow the step counter: refused, named.
+TEST(Checkpoint, ANegativeStepOrANonFiniteClockIsRefused) {
+  const fs::path dir = testing::fresh_dir("checkpoint_clock");
+  const fs::path file = dir / "state.bin";
+  const std::string prefix = "checkpoint " + file.string() + ": ";
+  EXPECT_EQ(read_into(cube(), cube(), file, [](World& w, RunClock&) { w.step = -4611686018427387904; }),
+            prefix + "its step is -4611686018427387904, expected 0 or more");
+  EXPECT_EQ(read_into(cube(), cube(), file, [](World&, RunClock& c) { c.frames = -1; }),
+            prefix + "its frame count is -1, expected 0 or more");
+  EXPECT_EQ(read_into(cube(), cube(), file,
+                      [](World& w, RunClock&) { w.time = std::numeric_limits<double>::infinity(); }),
+            prefix + "its time is inf, expected a finite value of 0 or more");
+  EXPECT_EQ(read_into(cube(), cube(), file,
+                      [](World&, RunClock& c) { c.next_output = std::numeric_limits<double>::quiet_NaN(); }),
+            prefix + "its next output time is nan, expected a finite value");
   fs::remove_all(dir);
 }
 

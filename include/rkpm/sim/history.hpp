@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace rkpm::io {
 class Json;
@@ -28,7 +29,11 @@ class History {
   void record(const World& world, Integrator& integrator);
 
  private:
+  // Throws io::NonFiniteValue naming the first column of `row` that is not finite.
+  void refuse_non_finite(const std::string& row) const;
+
   bool writes_ = true;
+  std::vector<std::string> columns_;
   std::filesystem::path path_;
   std::ofstream out_;
   const Body* shape_body_;

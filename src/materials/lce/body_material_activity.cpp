@@ -161,10 +161,12 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
   if (reference_zeta == 0.0) return {};
 
   const Vec3 axis_raw = settings.zeta_axis;
-  if (!(axis_raw.norm() > 0.0))
+  // stableNorm: tiny or huge components still give a direction (the plain norm squares
+  // them to 0 or infinity).
+  if (!(axis_raw.stableNorm() > 0.0))
     throw SetupError(fmt::format("{}:{}: [body.material] zeta_axis = [0, 0, 0]: expected a non-zero vector",
                                  m.file(), m.line("zeta_axis")));
-  const Vec3 axis = axis_raw.normalized();
+  const Vec3 axis = axis_raw.stableNormalized();
   const std::size_t n = body.size();
   auto cos2 = [&](std::size_t i) { return std::min(1.0, std::pow(body.director->h0[i].dot(axis), 2)); };
 

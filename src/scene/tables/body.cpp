@@ -30,7 +30,9 @@ ParamTable director_section() {
   t.finish = [](ParamSet& p) {
     const bool fixed = p.choice("initial") == "fixed";
     if (!fixed && p.given("vector")) throw p.error("vector", "no vector unless initial = \"fixed\"");
-    if (fixed && p.vec3("vector").norm() == 0.0) throw p.error("vector", "a non-zero vector");
+    // stableNorm: a vector of tiny or huge components is a direction too (the plain norm
+    // squares them to 0 or infinity).
+    if (fixed && p.vec3("vector").stableNorm() == 0.0) throw p.error("vector", "a non-zero vector");
   };
   return t;
 }

@@ -98,6 +98,10 @@ ParamTable gmsh() {
       ParamSpec::real("mesh_size", "m").greater_than(0).absent_means("required for .geo")
           .help("Largest element edge of the mesh made from a .geo file, in the file's units (before scale). "
                 "Not used for a .msh file."),
+      ParamSpec::boolean("trusted").defaults(false)
+          .help("A .geo file is a program. Unless true, one that runs commands (SystemCall), ends the "
+                "process (Exit), reads other files (Include, Merge), loops (For, While), calls macros or "
+                "sets Mesh.* options is refused. Set it only for a file you wrote or checked."),
   };
   t.surfaces = {"surface"};
   return t;

@@ -6,6 +6,7 @@
 #include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/io/json.hpp"
+#include "rkpm/common/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -162,7 +163,7 @@ void Contact::add_forces(World&) {
   row_energy_.resize(a_.size());  // only the owned rows are written and read
   std::size_t active = 0;
 
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : active)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : active) if (worth_threads(row_end - row_begin))
   for (Index i = row_begin; i < row_end; ++i) {
     double e = 0.0;
     Vec3 fi = Vec3::Zero();
@@ -215,7 +216,7 @@ double Contact::stable_dt(const World&) const {
   const double rc2 = cutoff_ * cutoff_;
   // Per listed pair inside the cutoff: k_IJ; per particle the Gershgorin row sum.
   std::vector<double> row_a(a_.size(), 0.0);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) if (worth_threads(a_.owned_end() - a_.owned_begin()))
   for (Index i = a_.owned_begin(); i < a_.owned_end(); ++i) {
     double g = 0.0;
     for (Index k = offset[i]; k < offset[i + 1]; ++k) {

@@ -1,6 +1,7 @@
 #include "terms/contact/contact_pairs.hpp"
 
 #include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/common/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,7 @@ ContactPairs::ContactPairs(double cutoff, double skin, Keep keep, bool transpose
 double ContactPairs::largest_move(const std::vector<Vec3>& x, const std::vector<Vec3>& at_build, Index begin,
                                   Index end) {
   double worst = 0.0;
-#pragma omp parallel for schedule(static) reduction(max : worst)
+#pragma omp parallel for schedule(static) reduction(max : worst) if (worth_threads(end - begin))
   for (Index i = begin; i < end; ++i) worst = std::max(worst, (x[i] - at_build[i]).squaredNorm());
   return std::sqrt(worst);
 }

@@ -6,6 +6,7 @@
 
 #include "rkpm/io/json.hpp"
 #include "rkpm/sim/body_points.hpp"
+#include "rkpm/common/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -128,7 +129,7 @@ bool VolumeConstraint::owns_row(std::size_t r) const {
 double VolumeConstraint::measure_signed_volume() {
   // V = (1/3) sum_L cof(F_L) : (C_L + sum_I d_I (x) B_LI), the facet sum x_f . a_f regrouped.
   const auto m = static_cast<Index>(owner_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(m))
   for (Index r = 0; r < m; ++r) {
     if (!owns_row(static_cast<std::size_t>(r))) {
       cone_[r] = 0.0;  // another rank's cell
@@ -162,7 +163,7 @@ void VolumeConstraint::add_forces(World&) {
   // One process: a gather per particle over the transposed rows, in parallel.
   const auto& T = by_particle_;
   const auto n = static_cast<Index>(body_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(n))
   for (Index I = 0; I < n; ++I) {
     if (T.offset[I] == T.offset[I + 1]) continue;
     Vec3 push = Vec3::Zero();

@@ -6,6 +6,7 @@
 #include "rkpm/sim/body_points.hpp"
 
 #include "rkpm/io/json.hpp"
+#include "rkpm/common/parallel.hpp"
 
 #include <fmt/format.h>
 
@@ -73,7 +74,7 @@ bool WallContact::excluded(Index i, Index j) const { return (reference_[i] - ref
 void WallContact::add_forces(World& world) {
   const auto start = std::chrono::steady_clock::now();
   const auto n = static_cast<Index>(particles_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(n))
   for (Index i = 0; i < n; ++i) points_[i] = physical_point(body_, particles_[i]);
   // Distributed: each rank computes the points of its own particles (it holds their
   // interpolation rows) and gathers the others', then evaluates every pair as a single
@@ -89,7 +90,7 @@ void WallContact::add_forces(World& world) {
   const auto& partner = pairs_.partner();
   const double s2 = lj_.s0 * lj_.s0;
   std::size_t active = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : active)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : active) if (worth_threads(n))
   for (Index i = 0; i < n; ++i) {
     double e = 0.0, closest2 = kInfinity;
     Vec3 f = Vec3::Zero();
@@ -145,7 +146,7 @@ double WallContact::stable_dt(const World&) const {
   if (pairs_.builds() == 0 || pairs_.size() == 0) return kInfinity;
   double omega2 = 0.0;
   const auto n = static_cast<Index>(particles_.size());
-#pragma omp parallel for schedule(dynamic, 64) reduction(max : omega2)
+#pragma omp parallel for schedule(dynamic, 64) reduction(max : omega2) if (worth_threads(n))
   for (Index i = 0; i < n; ++i) omega2 = std::max(omega2, gershgorin_row(i));
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : kInfinity;
 }
@@ -166,7 +167,7 @@ void WallContact::scale_inertia_to(World&, double dt) {
   std::vector<double> factor(particles_.size());
   for (int pass = 0; pass < kInertiaPasses; ++pass) {
     int raised = 0;
-#pragma omp parallel for schedule(dynamic, 64) reduction(+ : raised)
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : raised) if (worth_threads(n))
     for (Index i = 0; i < n; ++i) {
       const double g = gershgorin_row(i);
       factor[i] = g > bound ? g / bound : 1.0;

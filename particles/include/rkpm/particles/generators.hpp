@@ -75,11 +75,22 @@ struct GmshImportSpec {
   std::string path;
   double scale = 1.0;
   double mesh_size = 0.0;
+  // A .geo file is a program Gmsh runs. Unless trusted, one that could act outside its
+  // own geometry (run a command, end the process, read other files, loop) is refused
+  // before Gmsh sees it (screen_geo_script).
+  bool trusted = false;
 };
 Cloud import_gmsh(const GmshImportSpec& spec);
 // The surface names a Gmsh file provides ("surface" first, then its named physical
-// surfaces in tag order), without meshing it. Throws CloudError for a file Gmsh cannot read.
-std::vector<std::string> gmsh_surface_names(const std::string& path);
+// surfaces in tag order), without meshing it. Throws CloudError for a file Gmsh cannot
+// read, or an untrusted .geo that screen_geo_script refuses.
+std::vector<std::string> gmsh_surface_names(const std::string& path, bool trusted = false);
+// Throws CloudError naming the file, the line and the command when the .geo script at
+// `path` uses a command that acts outside its own geometry: SystemCall and its
+// variants, Exit, Sleep, OnelabRun, CreateDir, Include, Merge, loops (For, While) and
+// macros (Call), or sets a meshing option (Mesh.*) that would change the element size
+// the scene declares. Comments and strings are skipped.
+void screen_geo_script(const std::string& path);
 // The particles a Gmsh import will hold, before importing: a .msh file's node count
 // (an upper bound: a second-order mesh's mid-nodes are not particles), for a .geo file
 // 1.4 V / mesh_size^3 with V its bounding box's volume (a tetrahedral mesh of edge h

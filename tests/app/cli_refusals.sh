@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# Hostile input at the command line: each case must end with its documented exit code
+# and a message that names the option, file or quantity, never a crash, a hang or a
+# non-finite number in the output (docs/guide/running.md, "Exit codes").
+# Usage: cli_refusals.sh RKPM_PROGRAM SOURCE_DIR
+set -uo pipefail
+rkpm=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+# expect CODE TEXT -- COMMAND...: COMMAND exits with CODE and its output contains TEXT.
+expect() {
+  local code=$1 text=$2
+  shift 3
+  local out status
+  out=$(timeout 120 "$@" 2>&1)
+  status=$?
+  if [ "$status" != "$code" ]; then
+    echo "FAIL: $* exited $status, expected $code"; echo "$out" | tail -5; failures=$((failures + 1))
+  elif ! grep -qF -- "$text" <<<"$out"; then
+    echo "FAIL: $* printed no '$text'"; echo "$out" | tail -5; failures=$((failures + 1))
+  else
+    echo "ok: exit $code, '$text'"
+  fi
+}
+
+sag="$source_dir/examples/sag/sag.toml"
+expect 2 "--threads 100000: more than this machine allows" -- "$rkpm" run "$sag" --out "$work/t" --threads 100000
+expect 2 "--max-steps" -- "$rkpm" run "$sag" --out "$work/m" --max-steps 99999999999999999999999
+
+# A .geo that defines no entity: Gmsh throws a std::string from its bounding box.
+geo_scene() {  # geo_scene NAME GEO_TEXT: a scene of one body meshed from NAME.geo
+  printf '%s' "$2" >"$work/$1.geo"
+  cat >"$work/$1.toml" <<TOML
+[scene]
+name = "$1"
+[integrator]
+mode = "relax"
+[[body]]
+name = "b"
+[body.cloud]
+generator = "gmsh"
+file = "$1.geo"
+mesh_size = 0.5
+scale = 1e-6
+[body.material]
+model = "neo_hookean"
+mu = 1000
+lambda = 4000
+TOML
+}
+geo_scene empty ""
+expect 2 "empty.geo" -- "$rkpm" check "$work/empty.toml"
+expect 2 "empty.geo" -- "$rkpm" run "$work/empty.toml" --out "$work/empty_run"
+# A .geo that would end the process or run a command is refused, and writes nothing.
+geo_scene quits $'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 1, 1, 1};\nExit;\n'
+expect 2 "line 3: 'Exit' is not allowed in an untrusted .geo script" -- "$rkpm" run "$work/quits.toml" --out "$work/quits_run"
+[ -e "$work/quits_run" ] && { echo "FAIL: the refused run wrote $work/quits_run"; failures=$((failures + 1)); }
+geo_scene calls $'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 1, 1, 1};\nSystemCall "touch '"$work"'/pwned";\n'
+expect 2 "'SystemCall' is not allowed" -- "$rkpm" check "$work/calls.toml"
+[ -e "$work/pwned" ] && { echo "FAIL: the .geo script ran its command"; failures=$((failures + 1)); }
+
+# A body force that overflows the energies: exit 3 with the step and the quantity, and
+# no infinity written to history.csv.
+sed -e 's/acceleration = .*/acceleration = [0.0, 0.0, -1e300]/' "$sag" >"$work/overflow.toml"
+expect 3 "non-finite value" -- "$rkpm" run "$work/overflow.toml" --out "$work/overflow" --quiet
+if grep -qiE "inf|nan" "$work/overflow/history.csv" 2>/dev/null; then
+  echo "FAIL: history.csv holds a non-finite value"; failures=$((failures + 1))
+fi
+
+echo "$failures failure(s)"
+[ "$failures" = 0 ]
