@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <mutex>
 #include <string>
@@ -23,29 +24,64 @@ namespace {
   throw CloudError("Gmsh file '" + path + "': " + what);
 }
 
-// Gmsh keeps one process-wide state: one import at a time, initialised once, quiet,
-// errors thrown (General.AbortOnError = 2) and caught below.
+// Gmsh keeps one process-wide state: one import at a time, under this lock.
 std::mutex& gmsh_mutex() {
   static std::mutex m;
   return m;
 }
 
+bool& gmsh_initialised() {
+  static bool initialised = false;
+  return initialised;
+}
+
 void ensure_initialised() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    gmsh::initialize(0, nullptr, false);
-    gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::option::setNumber("General.AbortOnError", 2);
-  });
+  if (gmsh_initialised()) return;
+  gmsh::initialize(0, nullptr, false);
+  gmsh_initialised() = true;
+}
+
+// Gmsh's options outlive a file: a script may set them, and a trusted one may. Before
+// each open they are set back to what every import starts from: quiet, errors thrown
+// (AbortOnError = 2, caught by with_gmsh), and the meshing options rkpm's estimate
+// assumes.
+void reset_options() {
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::option::setNumber("General.AbortOnError", 2);
+  gmsh::option::setNumber("Mesh.ElementOrder", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeFactor", 1.0);
+  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
+  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
+  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
+  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
+  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
+  gmsh::option::setNumber("Mesh.RecombineAll", 0);
 }
 
 bool is_geo(const std::string& path) { return std::filesystem::path(path).extension() == ".geo"; }
 
+// Gmsh runs any file whose first line is not a mesh header as a .geo script, whatever
+// its name: an untrusted file named otherwise must be a mesh.
+void require_mesh_header(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string first;
+  std::getline(in, first);
+  if (!first.empty() && first.back() == '\r') first.pop_back();
+  if (first != "$MeshFormat" && first != "$NOD")
+    fail(path, "expected a Gmsh mesh, whose first line is $MeshFormat (Gmsh would run any other file as a "
+               "script); a .geo geometry is named *.geo");
+}
+
 // Opens `path` as the only model; Gmsh reports a file it cannot read by throwing. An
-// untrusted .geo script is screened first: opening it runs it.
+// untrusted file is checked first: opening a script runs it.
 void open_model(const std::string& path, bool trusted) {
-  if (is_geo(path) && !trusted) screen_geo_script(path);
+  if (!trusted) {
+    if (is_geo(path)) screen_geo_script(path);
+    else require_mesh_header(path);
+  }
   ensure_initialised();
+  reset_options();
   gmsh::clear();
   try {
     gmsh::open(path);
@@ -90,6 +126,7 @@ auto with_gmsh(const std::string& path, Use use) -> decltype(use()) {
   std::lock_guard<std::mutex> lock(gmsh_mutex());
   struct ClearModel {
     ~ClearModel() {
+      if (!gmsh_initialised()) return;  // a file refused before Gmsh ever started
       try {
         gmsh::clear();
       } catch (...) {  // a failed clear leaves a model the next open replaces
@@ -111,6 +148,20 @@ auto with_gmsh(const std::string& path, Use use) -> decltype(use()) {
   }
 }
 
+// A bound on the nodes of the open geometry meshed at size h: the nodes of a grid of
+// that size over its bounding box, times 3 for a tetrahedral mesh's denser nodes (about
+// 1.4 in the bulk) and a small body's surface nodes (a unit cube at h = 0.5 has 45
+// nodes against the grid's 27). Each extent has at least two sheets of nodes, so a slab
+// thinner than h still counts its layer of elements, which a plain volume over h^3
+// would count as almost none.
+double geo_node_bound(double h) {
+  if (!(h > 0.0)) return 0.0;
+  double x0, y0, z0, x1, y1, z1;
+  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
+  const auto sheets = [h](double extent) { return std::max(extent / h, 1.0) + 1.0; };
+  return 3.0 * sheets(x1 - x0) * sheets(y1 - y0) * sheets(z1 - z0);
+}
+
 }  // namespace
 
 std::vector<std::string> gmsh_surface_names(const std::string& path, bool trusted) {
@@ -127,15 +178,7 @@ double gmsh_particle_estimate(const GmshImportSpec& spec) {
     open_model(spec.path, spec.trusted);
     double estimate = 0.0;
     if (is_geo(spec.path)) {
-      double x0, y0, z0, x1, y1, z1;
-      gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-      // The nodes of a grid of the declared size over the bounding box, with 1.4 for a
-      // tetrahedral mesh's denser nodes: each extent has at least two sheets of nodes,
-      // so a slab thinner than the size still counts its layer of elements, which a
-      // plain volume over h^3 would count as almost none.
-      const double h = spec.mesh_size;
-      const auto sheets = [h](double extent) { return std::max(extent / h, 1.0) + 1.0; };
-      estimate = h > 0.0 ? 1.4 * sheets(x1 - x0) * sheets(y1 - y0) * sheets(z1 - z0) : 0.0;
+      estimate = geo_node_bound(spec.mesh_size);
     } else {
       std::vector<std::size_t> tags;
       std::vector<double> xyz, uvw;
@@ -153,16 +196,25 @@ Cloud import_gmsh(const GmshImportSpec& spec) {
     if (is_geo(path)) {
       if (!(spec.mesh_size > 0.0)) fail(path, "a .geo file needs a mesh size to be meshed with");
       gmsh::option::setNumber("Mesh.MeshSizeMax", spec.mesh_size);
-      gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
       // Sizes given at the points of an untrusted script are ignored: the scene's
-      // mesh_size, which the pre-flight counts with, is the size (Gmsh's options are
-      // process-wide, so a trusted file sets its default back).
-      gmsh::option::setNumber("Mesh.MeshSizeFromPoints", spec.trusted ? 1 : 0);
+      // mesh_size, which the pre-flight counts with, is the size. A trusted script keeps
+      // its own setting.
+      if (!spec.trusted) gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+      const double bound = geo_node_bound(spec.mesh_size);
       try {
         gmsh::model::mesh::generate(3);
       } catch (const std::string& e) {
         fail(path, "meshing failed: " + e);
       }
+      // What the pre-flight allowed for is what an untrusted script may make.
+      std::vector<std::size_t> tags;
+      std::vector<double> xyz, uvw;
+      gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
+      if (!spec.trusted && static_cast<double>(tags.size()) > bound)
+        fail(path, "meshed into " + std::to_string(tags.size()) + " nodes, more than the " +
+                       std::to_string(static_cast<long long>(bound)) +
+                       " the pre-flight estimate allows at mesh_size " + std::to_string(spec.mesh_size) +
+                       "; expected a geometry whose mesh the size declares (or trusted = true)");
     }
 
     std::vector<int> types;

@@ -1,14 +1,16 @@
 // A .geo file is a program in Gmsh's language, and a scene shared by a colleague should
 // not run commands on the reader's machine, end the process, read or write other files,
-// or mesh past what the scene declares. This screen reads the script's words (comments
-// and strings skipped) and refuses the commands that act outside the geometry itself
-// before Gmsh sees the file; a scene that trusts its file ([body.cloud] trusted = true)
-// skips it.
+// or mesh past what the scene declares. This screen reads the script as Gmsh's lexer
+// does (its two kinds of quotes, no escapes, `//` and `/* */` comments) and refuses,
+// before Gmsh sees the file, the commands and constructs that act outside the geometry
+// itself. It is a list of what is refused, so it is a guard, not a sandbox: a scene
+// that trusts its file ([body.cloud] trusted = true) skips it, and the docs ask users to
+// trust only files they wrote or read (docs/guide/scenes.md).
 #include "rkpm/particles/cloud.hpp"
 #include "rkpm/particles/generators.hpp"
 
 #include <algorithm>
-#include <array>
+#include <iterator>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -18,29 +20,32 @@
 namespace rkpm::particles {
 namespace {
 
-// Commands that act outside the geometry: processes (SystemCall, OnelabRun), the
-// process's end (Exit, Abort), time (Sleep), files (CreateDir, Include, Merge, Save,
-// Print, Printf's redirection, Plugin), control flow that can run without bound (For,
-// While, Macro, Call, Function), meshing inside the script (Mesh), and element sizes or
-// counts of the script's own, which would mesh past the size the scene declares
-// (Field, Characteristic Length, MeshSize, Transfinite, extrusion Layers).
-constexpr std::array<std::string_view, 25> kRefusedWords = {
-    "SystemCall", "NonBlockingSystemCall", "OnelabRun", "Exit",           "Abort",         "Sleep",
-    "CreateDir",  "Include",               "Merge",     "MergeWithBoundingBox", "Save",    "Print",
-    "Printf",     "Plugin",                "For",       "While",          "Macro",         "Call",
-    "Function",   "Mesh",                  "Field",     "Characteristic", "MeshSize",      "Transfinite",
-    "Layers"};
-
-// Option prefixes whose settings would change how the file is meshed (the element size
-// the scene declares and the pre-flight counts with) or what the process does.
-constexpr std::array<std::string_view, 3> kRefusedOptionPrefixes = {"Mesh.", "General.", "Solver."};
+// Commands that act outside the geometry: processes (System, SystemCall, OnelabRun),
+// the process's end (Exit, Abort, Error once options change), time (Sleep), files and
+// the environment (CreateDir, Include, Merge, Save, Print, Printf's redirection, Plugin,
+// ShapeFromFile, ListFromFile, GetEnv, and the prompts GetString, GetValue, GetNumber),
+// options (Options, SetNumber, SetString, which Delete Options and ONELAB use), names
+// made from strings (S2N, StringToName: a command spelt inside a string), control flow
+// that can run without bound (For, While, Macro, Call, Function), copies that can double
+// the model line by line (Duplicata), meshing inside the script (Mesh, RefineMesh,
+// OptimizeMesh, SetOrder), and element sizes or counts of the script's own (Field,
+// Characteristic, MeshSize, Transfinite, Layers).
+constexpr std::string_view kRefusedWords[] = {
+    "System",      "SystemCall",   "NonBlockingSystemCall", "OnelabRun",     "OnelabAction", "Exit",
+    "Abort",       "Error",        "Sleep",                 "CreateDir",     "Include",      "Merge",
+    "MergeWithBoundingBox", "Save", "Print",                "Printf",        "Plugin",       "ShapeFromFile",
+    "ListFromFile", "GetEnv",      "GetString",             "GetValue",      "GetNumber",    "Options",
+    "SetNumber",   "SetString",    "SetChanged",            "S2N",           "StringToName", "For",
+    "While",       "Macro",        "Call",                  "Function",      "Duplicata",    "Mesh",
+    "RefineMesh",  "OptimizeMesh", "SetOrder",              "Field",         "Characteristic", "MeshSize",
+    "Transfinite", "Layers"};
 
 bool starts_word(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool in_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
+bool in_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-[[noreturn]] void refuse(const std::string& path, int line, const std::string& word) {
-  throw CloudError("Gmsh file '" + path + "' line " + std::to_string(line) + ": '" + word +
-                   "' is not allowed in an untrusted .geo script (it acts outside the geometry or changes "
+[[noreturn]] void refuse(const std::string& path, int line, const std::string& what) {
+  throw CloudError("Gmsh file '" + path + "' line " + std::to_string(line) + ": " + what +
+                   " is not allowed in an untrusted .geo script (it acts outside the geometry or changes "
                    "the declared mesh size); expected a geometry only, or [body.cloud] trusted = true for a "
                    "file you wrote or checked");
 }
@@ -55,33 +60,50 @@ void screen_geo_script(const std::string& path) {
   const std::string text = buffer.str();
 
   int line = 1;
+  const auto skip_to = [&](std::size_t from, std::size_t to) {
+    line += static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(from),
+                                        text.begin() + static_cast<std::ptrdiff_t>(to), '\n'));
+    return to;
+  };
+  // Bytes Gmsh's lexer reads otherwise than a text file, wherever they are: a NUL ends a
+  // comment early, a carriage return alone would hide the line count.
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\0') refuse(path, line, "a NUL byte");
+    if (text[i] == '\r' && (i + 1 >= text.size() || text[i + 1] != '\n')) refuse(path, line, "a bare carriage return");
+    if (text[i] == '\n') ++line;
+  }
+  line = 1;
+  char previous = ' ';  // the last character that was not blank, outside comments
   for (std::size_t i = 0; i < text.size();) {
     const char c = text[i];
     if (c == '\n') {
       ++line;
       ++i;
     } else if (text.compare(i, 2, "//") == 0) {
-      while (i < text.size() && text[i] != '\n') ++i;
+      i = skip_to(i, std::min(text.find('\n', i), text.size()));
     } else if (text.compare(i, 2, "/*") == 0) {
       const std::size_t end = text.find("*/", i + 2);
-      const std::size_t stop = end == std::string::npos ? text.size() : end + 2;
-      line += static_cast<int>(std::count(text.begin() + static_cast<std::ptrdiff_t>(i),
-                                          text.begin() + static_cast<std::ptrdiff_t>(stop), '\n'));
-      i = stop;
-    } else if (c == '"') {
-      for (++i; i < text.size() && text[i] != '"'; ++i) {
-        if (text[i] == '\\') ++i;
-        else if (text[i] == '\n') ++line;
-      }
-      ++i;
-    } else if (starts_word(c)) {
+      i = skip_to(i, end == std::string::npos ? text.size() : end + 2);
+    } else if (c == '"' || c == '\'') {
+      // Gmsh's strings have no escapes: the string ends at the next quote of its kind.
+      const std::size_t end = text.find(c, i + 1);
+      if (end == std::string::npos) refuse(path, line, "an unterminated string");
+      i = skip_to(i, end + 1);
+      previous = c;
+    } else if (starts_word(c) && !(std::isdigit(static_cast<unsigned char>(previous)) || previous == '.')) {
       const std::size_t begin = i;
       while (i < text.size() && in_word(text[i])) ++i;
       const std::string word = text.substr(begin, i - begin);
-      if (std::find(kRefusedWords.begin(), kRefusedWords.end(), word) != kRefusedWords.end()) refuse(path, line, word);
-      for (const auto prefix : kRefusedOptionPrefixes)
-        if (word.compare(0, prefix.size(), prefix) == 0) refuse(path, line, word);
+      if (std::find(std::begin(kRefusedWords), std::end(kRefusedWords), word) != std::end(kRefusedWords))
+        refuse(path, line, "'" + word + "'");
+      previous = 'a';
+    } else if (c == '.' && (std::isalpha(static_cast<unsigned char>(previous)) || previous == '_' ||
+                            previous == ']')) {
+      // Name.Option or Name[i].Option: an option of Gmsh's, which can change the mesh
+      // size, the error handling or the process (a number's point follows a digit).
+      refuse(path, line, "an option (a name followed by '.')");
     } else {
+      if (!std::isspace(static_cast<unsigned char>(c))) previous = c;
       ++i;
     }
   }

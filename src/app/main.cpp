@@ -37,8 +37,18 @@ int thread_ceiling() {
   return static_cast<int>(std::min<long>(omp_get_thread_limit(), 8 * hardware));
 }
 
-int run_command(int argc, char** argv) {
-  rkpm::par::Session mpi(argc, argv);  // joins the run's ranks under mpirun; nothing otherwise
+void report_internal_error(const std::string& what) {
+  std::cerr << "error: internal error: " << what << " (please report it with the scene)\n";
+}
+
+// Ends every rank of a distributed run at once: the others may wait in a collective
+// for the one that failed, and MPI_Finalize would wait for them.
+void abort_if_distributed() {
+  const auto& world = rkpm::par::Comm::world();
+  if (world.parallel()) world.abort(rkpm::sim::kInternalError);
+}
+
+int command(int argc, char** argv) {
   CLI::App app{"rkpm: reproducing-kernel particle simulator for cell mechanics (active liquid-crystal "
                "elastomer cells on Mooney-Rivlin substrates)"};
   app.set_version_flag("--version", std::string("rkpm ") + RKPM_VERSION);
@@ -129,9 +139,11 @@ int run_command(int argc, char** argv) {
       return rkpm::sim::kBadInput;
     }
   }
-  if (threads > thread_ceiling()) {
+  // The smallest ceiling over the ranks, so that every rank gives the same verdict.
+  const int ceiling = static_cast<int>(rkpm::par::Comm::world().min(static_cast<double>(thread_ceiling())));
+  if (threads > ceiling) {
     if (rkpm::par::Comm::world().root())
-      std::cerr << "error: --threads " << threads << ": more than this machine allows (at most " << thread_ceiling()
+      std::cerr << "error: --threads " << threads << ": more than this machine allows (at most " << ceiling
                 << ": 8 per hardware thread, within the OpenMP thread limit)\n";
     return rkpm::sim::kBadInput;
   }
@@ -186,16 +198,15 @@ int run_command(int argc, char** argv) {
 // an OpenMP thread cannot reach main's handlers): a message and exit 1, never
 // std::terminate's abort.
 [[noreturn]] void last_words() {
-  std::cerr << "error: internal error: ";
   try {
     if (const auto e = std::current_exception()) std::rethrow_exception(e);
-    std::cerr << "terminated without an exception";
+    report_internal_error("terminated without an exception");
   } catch (const std::exception& e) {
-    std::cerr << e.what();
+    report_internal_error(e.what());
   } catch (...) {
-    std::cerr << "an exception of unknown type";
+    report_internal_error("an exception of unknown type");
   }
-  std::cerr << " (please report it with the scene)\n";
+  abort_if_distributed();
   std::_Exit(rkpm::sim::kInternalError);
 }
 
@@ -203,12 +214,14 @@ int run_command(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   std::set_terminate(last_words);
+  rkpm::par::Session mpi(argc, argv);  // joins the run's ranks under mpirun; nothing otherwise
   try {
-    return run_command(argc, argv);
+    return command(argc, argv);
   } catch (const std::exception& e) {
-    std::cerr << "error: internal error: " << e.what() << " (please report it with the scene)\n";
+    report_internal_error(e.what());
   } catch (...) {
-    std::cerr << "error: internal error: an exception of unknown type (please report it with the scene)\n";
+    report_internal_error("an exception of unknown type");
   }
+  abort_if_distributed();
   return rkpm::sim::kInternalError;
 }

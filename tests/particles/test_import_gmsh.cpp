@@ -118,7 +118,7 @@ TEST(ImportGmsh, BadFilesAreRefusedNamingTheFileAndElement) {
   // A prism (Gmsh type 6).
   expect_refused({write_file("prism.msh", two_tets("2 4 2 2 1 1 2 3 4\n3 6 2 2 1 1 2 3 4 5 5\n")), 1.0, 0.0},
                  {"element 3 is a Prism 6", "only tetrahedra and hexahedra"});
-  expect_refused({write_file("text.msh", "this is not a mesh\n"), 1.0, 0.0}, {"not a mesh or geometry Gmsh can read"});
+  expect_refused({write_file("text.msh", "this is not a mesh\n"), 1.0, 0.0}, {"expected a Gmsh mesh"});
   expect_refused({write_file("surface_only.msh",
                              "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n"
                              "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n"),
@@ -143,18 +143,33 @@ TEST(ImportGmsh, AGeoWithoutEntitiesIsRefusedNotACrash) {
 }
 
 // An untrusted .geo is screened before Gmsh runs it: commands that act outside the
-// geometry are refused naming the file, the line and the word; the same words in
-// comments and strings, and a trusted file, pass the screen.
+// geometry are refused naming the file, the line and what was refused, including the
+// spellings that reach a command without its plain name; the same words in comments and
+// strings, numbers with a point, and a trusted file pass the screen. Scripts that would
+// end the process or run a command are checked by the screen alone, so that a
+// regression fails the test instead of ending it.
 TEST(ImportGmsh, AnUntrustedGeoThatActsOutsideItsGeometryIsRefused) {
   const std::string box = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n";
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"SystemCall \"touch pwned\";\n", "line 3: 'SystemCall'"},
+      {"System \"touch pwned\";\n", "line 3: 'System'"},
+      {"S2N[\"SystemCall\"] \"touch pwned\";\n", "line 3: 'S2N'"},
       {"Exit;\n", "line 3: 'Exit'"},
       {"For i In {1:1000000000}\nEndFor\n", "line 3: 'For'"},
       {"While (1)\nEndWhile\n", "line 3: 'While'"},
-      {"Mesh.MeshSizeFactor = 1e-3;\n", "line 3: 'Mesh.MeshSizeFactor'"},
+      {"Mesh.MeshSizeFactor = 1e-3;\n", "line 3: 'Mesh'"},
+      {"Geometry.Tolerance = 1;\n", "line 3: an option"},
+      {"General .AbortOnError = 4;\n", "line 3: an option"},
+      {"General[0].AbortOnError = 4;\n", "line 3: an option"},
+      {"Delete Options;\n", "line 3: 'Options'"},
+      {"Sleep.3e3;\n", "line 3: 'Sleep'"},
       {"Include \"other.geo\";\n", "line 3: 'Include'"},
       {"/* a\nlong comment */ Sleep 100;\n", "line 4: 'Sleep'"},
+      // Gmsh's strings have no escapes and two kinds of quotes: nothing hides in them.
+      {"a = '//'; System \"x\";\n", "line 3: 'System'"},
+      {"a = '\"'; System 'x'; b = '\"';\n", "line 3: 'System'"},
+      {"a = \"\\\"; SystemCall \"x\"; b = \"\\\";\n", "line 3: 'SystemCall'"},
+      {std::string("// a comment\0 Exit;\n", 19), "line 3: a NUL byte"},
   };
   for (const auto& [command, message] : refused) {
     const std::string path = write_file("untrusted.geo", box + command);
@@ -166,16 +181,31 @@ TEST(ImportGmsh, AnUntrustedGeoThatActsOutsideItsGeometryIsRefused) {
       EXPECT_NE(what.find("Gmsh file '" + path + "' " + message), std::string::npos) << what;
       EXPECT_NE(what.find("trusted = true"), std::string::npos) << what;
     }
-    expect_refused({path, 1.0, 0.5}, {message});  // the import screens it too
   }
+  // The import screens too (a script that, unscreened, would only loop on a number).
+  expect_refused({write_file("loops.geo", box + "For i In {1:3}\nEndFor\n"), 1.0, 0.5}, {"line 3: 'For'"});
+
   const std::string harmless = write_file("harmless.geo", box + "// SystemCall \"x\"; Exit;\n"
-                                                                  "Printed = 1; // a name that only starts like one\n"
-                                                                  "Physical Surface(\"Exit\") = {1};\n");
+                                                                  "Printed = 1.5e-3 + .5; // a name like one\n"
+                                                                  "Physical Surface('Exit') = {1};\n");
   EXPECT_NO_THROW(screen_geo_script(harmless));
   EXPECT_EQ(import_gmsh({harmless, 1.0, 0.5}).surface_names, (std::vector<std::string>{"surface", "Exit"}));
   EXPECT_NO_THROW(screen_geo_script(std::string(RKPM_SOURCE_DIR) + "/examples/spread_cell/spread_cell.geo"));
-  // A trusted script runs as written (Mesh.ElementOrder here).
-  EXPECT_GT(import_gmsh({write_file("trusted.geo", tet_box(2)), 1.0, 0.5, true}).size(), 0u);
+  // A trusted script runs as written (Mesh.ElementOrder here), and leaves nothing behind:
+  // the next untrusted import meshes at first order again.
+  const Cloud second_order = import_gmsh({write_file("trusted.geo", tet_box(2)), 1.0, 0.5, true});
+  const Cloud after = import_gmsh({write_file("plain.geo", box), 1.0, 0.5});
+  for (int e = 0; e < after.mesh.n_elements(); ++e) EXPECT_EQ(after.mesh.type[e], ElementType::Tet4);
+  EXPECT_GT(second_order.size(), 0u);
+}
+
+// Gmsh runs any file whose first line is not a mesh header as a script, whatever its
+// name: an untrusted file that is not a .geo must start as a mesh does.
+TEST(ImportGmsh, AnUntrustedScriptUnderAMeshNameIsRefused) {
+  const std::string path = write_file("script.msh", "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n");
+  expect_refused({path, 1.0, 0.0}, {"expected a Gmsh mesh, whose first line is $MeshFormat"});
+  EXPECT_THROW(gmsh_surface_names(path), CloudError);
+  EXPECT_THROW(gmsh_particle_estimate({path, 1.0, 0.0}), CloudError);
 }
 
 // A slab far thinner than the mesh size still gets a layer of elements through it: the
