@@ -1,20 +1,21 @@
-// Clouds from Gmsh, through Gmsh's own C++ API (Debian's libgmsh-dev): a .msh file as
-// it is, or a .geo file meshed here with a declared element size. The corner nodes of
+// Clouds from Gmsh: a .msh file as it is, or a .geo file meshed with a declared element
+// size. Gmsh itself runs in a child process (gmsh_model.hpp, isolated_call.hpp): its
+// readers crash on some malformed files, a script can make its mesher allocate without
+// bound, and a file it stopped reading can leave its state broken. The corner nodes of
 // the volume elements become the particles (a second-order mesh's mid-edge and face
 // nodes are dropped: the RK approximation, not the mesh, interpolates), and every
 // physical group of dimension 2 becomes a named surface.
+#include "gmsh_model.hpp"
+#include "isolated_call.hpp"
 #include "rkpm/particles/element_geometry.hpp"
 #include "rkpm/particles/generators.hpp"
-
-#include <gmsh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
-#include <mutex>
 #include <string>
+#include <system_error>
 #include <unordered_map>
 
 namespace rkpm::particles {
@@ -22,41 +23,6 @@ namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw CloudError("Gmsh file '" + path + "': " + what);
-}
-
-// Gmsh keeps one process-wide state: one import at a time, under this lock.
-std::mutex& gmsh_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-bool& gmsh_initialised() {
-  static bool initialised = false;
-  return initialised;
-}
-
-void ensure_initialised() {
-  if (gmsh_initialised()) return;
-  gmsh::initialize(0, nullptr, false);
-  gmsh_initialised() = true;
-}
-
-// Gmsh's options outlive a file: a script may set them, and a trusted one may. Before
-// each open they are set back to what every import starts from: quiet, errors thrown
-// (AbortOnError = 2, caught by with_gmsh), and the meshing options rkpm's estimate
-// assumes.
-void reset_options() {
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::option::setNumber("General.AbortOnError", 2);
-  gmsh::option::setNumber("Mesh.ElementOrder", 1);
-  gmsh::option::setNumber("Mesh.MeshSizeFactor", 1.0);
-  gmsh::option::setNumber("Mesh.MeshSizeMin", 0.0);
-  gmsh::option::setNumber("Mesh.MeshSizeMax", 1e22);
-  gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 1);
-  gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
-  gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 1);
-  gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
-  gmsh::option::setNumber("Mesh.RecombineAll", 0);
 }
 
 bool is_geo(const std::string& path) { return std::filesystem::path(path).extension() == ".geo"; }
@@ -73,37 +39,40 @@ void require_mesh_header(const std::string& path) {
                "script); a .geo geometry is named *.geo");
 }
 
-// Opens `path` as the only model; Gmsh reports a file it cannot read by throwing. An
-// untrusted file is checked first: opening a script runs it.
-void open_model(const std::string& path, bool trusted) {
-  if (!trusted) {
-    if (is_geo(path)) screen_geo_script(path);
-    else require_mesh_header(path);
-  }
-  ensure_initialised();
-  reset_options();
-  gmsh::clear();
-  try {
-    gmsh::open(path);
-  } catch (const std::string& e) {
-    fail(path, "not a mesh or geometry Gmsh can read: " + e);
-  } catch (const std::exception& e) {
-    fail(path, std::string("not a mesh or geometry Gmsh can read: ") + e.what());
-  }
+// What the child may use for an untrusted file: a minute of CPU and a gigabyte, plus, for
+// a mesh file, a second and 200 bytes per byte of it (Gmsh holds a node in about 100
+// bytes of text), and, for a script, a millisecond and 16 KiB per node of the bound the
+// pre-flight counted with. A trusted file has no limits: its author vouches for its size.
+ChildLimits limits_for(const GmshReadSpec& spec, double node_bound) {
+  if (spec.trusted) return {};
+  constexpr std::size_t kGiB = std::size_t{1} << 30;
+  if (is_geo(spec.path))
+    return {60.0 + 1e-3 * node_bound, kGiB + static_cast<std::size_t>(16384.0 * std::min(node_bound, 1e12))};
+  std::error_code ec;
+  const auto bytes = static_cast<double>(std::filesystem::file_size(spec.path, ec));
+  return {60.0 + bytes / 1e6, kGiB + static_cast<std::size_t>(200.0 * bytes)};
 }
 
-// The named surfaces: physical groups of dimension 2, by name (a group without a name
-// is called by its tag, "physical_surface_<tag>").
-std::vector<std::pair<std::string, int>> named_surfaces() {
-  gmsh::vectorpair groups;
-  gmsh::model::getPhysicalGroups(groups, 2);
-  std::vector<std::pair<std::string, int>> named;
-  for (const auto& [dim, tag] : groups) {
-    std::string name;
-    gmsh::model::getPhysicalName(dim, tag, name);
-    named.emplace_back(name.empty() ? "physical_surface_" + std::to_string(tag) : name, tag);
+// The model as Gmsh reads it, from a child process. An untrusted file is screened
+// first: opening a script runs it.
+GmshModel read_model(const GmshReadSpec& spec, double node_bound = 0.0) {
+  if (!spec.trusted) {
+    if (is_geo(spec.path)) screen_geo_script(spec.path);
+    else require_mesh_header(spec.path);
   }
-  return named;
+  if (!std::ifstream(spec.path)) fail(spec.path, "cannot be read");
+  try {
+    const std::string bytes =
+        run_isolated([&](ByteWriter& out) { write_gmsh_model(out, read_gmsh_model(spec)); }, limits_for(spec, node_bound));
+    ByteReader in(bytes);
+    return read_gmsh_model_bytes(in);
+  } catch (const IsolatedError& e) {
+    // The child's own refusals already name the file.
+    if (e.message.rfind("Gmsh file '", 0) == 0) throw CloudError(e.message);
+    fail(spec.path, "Gmsh " + e.message + " reading it; expected a valid Gmsh file");
+  } catch (const std::runtime_error& e) {
+    fail(spec.path, std::string("reading Gmsh's answer failed: ") + e.what());
+  }
 }
 
 // Corner-node count of Gmsh's 3D element types that a cloud can hold: tetrahedra and
@@ -117,176 +86,83 @@ int corner_nodes(int gmsh_type) {
   }
 }
 
-// Runs one use of Gmsh's API on `path` under the process-wide lock. Gmsh reports its
-// errors by throwing std::string (and, from its C parts, C strings): every kind is
-// turned into a CloudError naming the file, so nothing Gmsh throws reaches the caller
-// as anything else. Gmsh's model is cleared afterwards whatever happened.
-template <class Use>
-auto with_gmsh(const std::string& path, Use use) -> decltype(use()) {
-  std::lock_guard<std::mutex> lock(gmsh_mutex());
-  struct ClearModel {
-    ~ClearModel() {
-      if (!gmsh_initialised()) return;  // a file refused before Gmsh ever started
-      try {
-        gmsh::clear();
-      } catch (...) {  // a failed clear leaves a model the next open replaces
-      }
-    }
-  } clear_model;
-  try {
-    return use();
-  } catch (const CloudError&) {
-    throw;
-  } catch (const std::string& e) {
-    fail(path, "Gmsh: " + e);
-  } catch (const char* e) {
-    fail(path, std::string("Gmsh: ") + (e ? e : "unknown error"));
-  } catch (const std::exception& e) {
-    fail(path, std::string("Gmsh: ") + e.what());
-  } catch (...) {
-    fail(path, "Gmsh failed with an error of unknown type");
-  }
-}
-
-// A bound on the nodes of the open geometry meshed at size h: the nodes of a grid of
-// that size over its bounding box, times 3 for a tetrahedral mesh's denser nodes (about
-// 1.4 in the bulk) and a small body's surface nodes (a unit cube at h = 0.5 has 45
-// nodes against the grid's 27). Each extent has at least two sheets of nodes, so a slab
-// thinner than h still counts its layer of elements, which a plain volume over h^3
-// would count as almost none.
-double geo_node_bound(double h) {
-  if (!(h > 0.0)) return 0.0;
-  double x0, y0, z0, x1, y1, z1;
-  gmsh::model::getBoundingBox(-1, -1, x0, y0, z0, x1, y1, z1);
-  const auto sheets = [h](double extent) { return std::max(extent / h, 1.0) + 1.0; };
-  return 3.0 * sheets(x1 - x0) * sheets(y1 - y0) * sheets(z1 - z0);
-}
-
 }  // namespace
 
 std::vector<std::string> gmsh_surface_names(const std::string& path, bool trusted) {
-  return with_gmsh(path, [&] {
-    open_model(path, trusted);
-    std::vector<std::string> names{"surface"};
-    for (const auto& [name, tag] : named_surfaces()) names.push_back(name);
-    return names;
-  });
+  const GmshModel model = read_model({path, 0.0, trusted, GmshRead::Surfaces});
+  std::vector<std::string> names{"surface"};
+  for (const auto& [name, tag] : model.surfaces) names.push_back(name);
+  return names;
 }
 
 double gmsh_particle_estimate(const GmshImportSpec& spec) {
-  return with_gmsh(spec.path, [&] {
-    open_model(spec.path, spec.trusted);
-    double estimate = 0.0;
-    if (is_geo(spec.path)) {
-      estimate = geo_node_bound(spec.mesh_size);
-    } else {
-      std::vector<std::size_t> tags;
-      std::vector<double> xyz, uvw;
-      gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
-      estimate = static_cast<double>(tags.size());
-    }
-    return estimate;
-  });
+  const GmshModel model = read_model({spec.path, spec.mesh_size, spec.trusted, GmshRead::Estimate});
+  return is_geo(spec.path) ? model.node_bound : static_cast<double>(model.node_count);
 }
 
 Cloud import_gmsh(const GmshImportSpec& spec) {
   const std::string& path = spec.path;
-  return with_gmsh(path, [&] {
-    open_model(path, spec.trusted);
-    if (is_geo(path)) {
-      if (!(spec.mesh_size > 0.0)) fail(path, "a .geo file needs a mesh size to be meshed with");
-      gmsh::option::setNumber("Mesh.MeshSizeMax", spec.mesh_size);
-      // Sizes given at the points of an untrusted script are ignored: the scene's
-      // mesh_size, which the pre-flight counts with, is the size. A trusted script keeps
-      // its own setting.
-      if (!spec.trusted) gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
-      const double bound = geo_node_bound(spec.mesh_size);
-      try {
-        gmsh::model::mesh::generate(3);
-      } catch (const std::string& e) {
-        fail(path, "meshing failed: " + e);
-      }
-      // What the pre-flight allowed for is what an untrusted script may make.
-      std::vector<std::size_t> tags;
-      std::vector<double> xyz, uvw;
-      gmsh::model::mesh::getNodes(tags, xyz, uvw, -1, -1, false, false);
-      if (!spec.trusted && static_cast<double>(tags.size()) > bound)
-        fail(path, "meshed into " + std::to_string(tags.size()) + " nodes, more than the " +
-                       std::to_string(static_cast<long long>(bound)) +
-                       " the pre-flight estimate allows at mesh_size " + std::to_string(spec.mesh_size) +
-                       "; expected a geometry whose mesh the size declares (or trusted = true)");
-    }
+  // A script's limits grow with its node bound, which a first child measures.
+  double bound = 0.0;
+  if (is_geo(path) && !spec.trusted) bound = gmsh_particle_estimate(spec);
+  const GmshModel model = read_model({path, spec.mesh_size, spec.trusted, GmshRead::Full}, bound);
+  if (model.volume_elements.empty()) fail(path, "has no volume elements (tetrahedra or hexahedra)");
 
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> element_tags, element_nodes;
-    gmsh::model::mesh::getElements(types, element_tags, element_nodes, 3);
-    if (types.empty()) fail(path, "has no volume elements (tetrahedra or hexahedra)");
-
-    // Particles: the corner nodes in order of first use; their ids index cloud.X.
-    std::vector<std::size_t> node_tags;
-    std::vector<double> coords, params;
-    gmsh::model::mesh::getNodes(node_tags, coords, params, -1, -1, false, false);
-    std::unordered_map<std::size_t, std::size_t> coord_of;
-    for (std::size_t k = 0; k < node_tags.size(); ++k) coord_of[node_tags[k]] = k;
-    std::unordered_map<std::size_t, std::int32_t> particle_of;
-    Cloud cloud;
-    cloud.name = path;
-    std::vector<std::size_t> gmsh_tag_of_element;
-    for (std::size_t t = 0; t < types.size(); ++t) {
-      const int corners = corner_nodes(types[t]);
-      std::string type_name;
-      int dim = 0, order = 0, n_nodes = 0, n_primary = 0;
-      std::vector<double> local;
-      gmsh::model::mesh::getElementProperties(types[t], type_name, dim, order, n_nodes, local, n_primary);
-      if (corners == 0)
-        fail(path, "element " + std::to_string(element_tags[t].front()) + " is a " + type_name +
-                       ": only tetrahedra and hexahedra (first or second order) can be imported");
-      for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
-        std::int32_t ids[8];
-        for (int c = 0; c < corners; ++c) {
-          const std::size_t tag = element_nodes[t][e * static_cast<std::size_t>(n_nodes) + c];
-          auto [it, inserted] = particle_of.try_emplace(tag, static_cast<std::int32_t>(cloud.X.size()));
-          if (inserted) {
-            const std::size_t k = coord_of.at(tag);
-            cloud.X.emplace_back(spec.scale * coords[3 * k], spec.scale * coords[3 * k + 1],
-                                 spec.scale * coords[3 * k + 2]);
-          }
-          ids[c] = it->second;
+  // Particles: the corner nodes in order of first use; their ids index cloud.X.
+  std::unordered_map<std::size_t, std::size_t> coord_of;
+  for (std::size_t k = 0; k < model.node_tags.size(); ++k) coord_of[model.node_tags[k]] = k;
+  if (model.coords.size() != 3 * model.node_tags.size()) fail(path, "Gmsh returned inconsistent node coordinates");
+  std::unordered_map<std::size_t, std::int32_t> particle_of;
+  Cloud cloud;
+  cloud.name = path;
+  std::vector<std::size_t> gmsh_tag_of_element;
+  for (const GmshElementBlock& block : model.volume_elements) {
+    const int corners = corner_nodes(block.type);
+    if (corners == 0)
+      fail(path, "element " + std::to_string(block.tags.front()) + " is a " + block.type_name +
+                     ": only tetrahedra and hexahedra (first or second order) can be imported");
+    for (std::size_t e = 0; e < block.tags.size(); ++e) {
+      std::int32_t ids[8];
+      for (int c = 0; c < corners; ++c) {
+        const std::size_t tag = block.nodes[e * static_cast<std::size_t>(block.nodes_per_element) + c];
+        auto [it, inserted] = particle_of.try_emplace(tag, static_cast<std::int32_t>(cloud.X.size()));
+        if (inserted) {
+          const auto found = coord_of.find(tag);
+          if (found == coord_of.end())
+            fail(path, "element " + std::to_string(block.tags[e]) + " refers to node " + std::to_string(tag) +
+                           ", which the file does not define");
+          const std::size_t k = found->second;
+          const double* x = &model.coords[3 * k];
+          if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+            fail(path, "node " + std::to_string(tag) + " has a coordinate that is not a finite number");
+          cloud.X.emplace_back(spec.scale * x[0], spec.scale * x[1], spec.scale * x[2]);
         }
-        cloud.mesh.add_element(corners == 4 ? ElementType::Tet4 : ElementType::Hex8, ids);
-        gmsh_tag_of_element.push_back(element_tags[t][e]);
+        ids[c] = it->second;
       }
+      cloud.mesh.add_element(corners == 4 ? ElementType::Tet4 : ElementType::Hex8, ids);
+      gmsh_tag_of_element.push_back(block.tags[e]);
     }
+  }
 
-    // Inverted or degenerate elements, named by their Gmsh tag, before finalize_cloud.
-    int inverted = 0, first = -1;
-    for (int e = 0; e < cloud.mesh.n_elements(); ++e)
-      if (!(element_min_scaled_jacobian(cloud, e) > 0.0) && inverted++ == 0) first = e;
-    if (inverted > 0)
-      fail(path, std::to_string(inverted) + " of " + std::to_string(cloud.mesh.n_elements()) +
-                     " volume elements are inverted or degenerate (first: element " +
-                     std::to_string(gmsh_tag_of_element[first]) + "); expected Gmsh node order with positive volume");
+  // Inverted or degenerate elements, named by their Gmsh tag, before finalize_cloud.
+  int inverted = 0, first = -1;
+  for (int e = 0; e < cloud.mesh.n_elements(); ++e)
+    if (!(element_min_scaled_jacobian(cloud, e) > 0.0) && inverted++ == 0) first = e;
+  if (inverted > 0)
+    fail(path, std::to_string(inverted) + " of " + std::to_string(cloud.mesh.n_elements()) +
+                   " volume elements are inverted or degenerate (first: element " +
+                   std::to_string(gmsh_tag_of_element[first]) + "); expected Gmsh node order with positive volume");
 
-    // Surfaces: bit 0 is the whole boundary, bit k the k-th named physical surface.
-    const auto named = named_surfaces();
-    if (named.size() + 1 > 32) fail(path, "has more than 31 physical surfaces");
-    cloud.surface_names = {"surface"};
-    for (const auto& [name, tag] : named) cloud.surface_names.push_back(name);
-    finalize_cloud(cloud);
-    for (const std::int32_t p : cloud.boundary_particles) cloud.surface_mask[p] |= 1u;
-    for (std::size_t k = 0; k < named.size(); ++k) {
-      std::vector<int> entities;
-      gmsh::model::getEntitiesForPhysicalGroup(2, named[k].second, entities);
-      for (int entity : entities) {
-        std::vector<std::size_t> tags;
-        std::vector<double> xyz, uvw;
-        gmsh::model::mesh::getNodes(tags, xyz, uvw, 2, entity, true, false);
-        for (std::size_t tag : tags)
-          if (auto it = particle_of.find(tag); it != particle_of.end()) cloud.surface_mask[it->second] |= 1u << (k + 1);
-      }
-    }
-    return cloud;
-  });
+  // Surfaces: bit 0 is the whole boundary, bit k the k-th named physical surface.
+  if (model.surfaces.size() + 1 > 32) fail(path, "has more than 31 physical surfaces");
+  cloud.surface_names = {"surface"};
+  for (const auto& [name, tag] : model.surfaces) cloud.surface_names.push_back(name);
+  finalize_cloud(cloud);
+  for (const std::int32_t p : cloud.boundary_particles) cloud.surface_mask[p] |= 1u;
+  for (std::size_t k = 0; k < model.surface_nodes.size(); ++k)
+    for (std::size_t tag : model.surface_nodes[k])
+      if (auto it = particle_of.find(tag); it != particle_of.end()) cloud.surface_mask[it->second] |= 1u << (k + 1);
+  return cloud;
 }
 
 }  // namespace rkpm::particles

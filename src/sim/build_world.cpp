@@ -346,6 +346,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.newton.force_tol = p.real("finish_force_tol");
   s.newton.max_newton_steps = static_cast<int>(p.integer("finish_max_newton_steps"));
   s.measured_stable_step = p.choice("stable_step") == "measured";
+  s.stable_step_auto = p.choice("stable_step") == "auto";
   s.stable_step_interval = p.integer("stable_step_interval");
   return s;
 }

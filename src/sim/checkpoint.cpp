@@ -148,6 +148,27 @@ std::string term_names(const World& world) {
 }
 
 std::string body_prefix(const Body& b) { return "body." + b.name + "."; }
+
+// Real fields that may hold +infinity in a sound checkpoint: the motion limit of a
+// run at rest (Integrator::motion_limited_dt).
+bool may_be_infinite(const std::string& name) { return name == "integrator.motion_dt"; }
+
+// A damaged or forged checkpoint must not carry a NaN or an infinity into the run (it
+// would reach the output as one): every real value is finite, but for the named few
+// that may be +infinity. Returns the first offending field and index, or "".
+std::string first_non_finite(const StateRecord& r) {
+  for (const auto& [name, f] : r.fields()) {
+    if (f.type != StateRecord::Type::Real) continue;
+    const std::size_t n = f.bytes.size() / sizeof(double);
+    for (std::size_t i = 0; i < n; ++i) {
+      double v;
+      std::memcpy(&v, f.bytes.data() + i * sizeof(double), sizeof v);
+      if (std::isfinite(v) || (v == INFINITY && may_be_infinite(name))) continue;
+      return fmt::format("field '{}' holds {} at value {}, expected a finite number", name, v, i);
+    }
+  }
+  return {};
+}
 std::string term_prefix(std::size_t k) { return fmt::format("term.{}.", k); }
 
 }  // namespace
@@ -262,12 +283,26 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       fail(fmt::format("its time is {}, expected a finite value of 0 or more", world.time));
     if (!std::isfinite(clock.next_output))
       fail(fmt::format("its next output time is {}, expected a finite value", clock.next_output));
+    if (const std::string bad = first_non_finite(r); !bad.empty()) fail(bad);
+    if (!(r.real("integrator.dt") > 0.0))
+      fail(fmt::format("its step is {} s, expected a positive step", r.real("integrator.dt")));
     for (auto& b : world.bodies) {
       const std::string p = body_prefix(*b);
       b->d = r.vectors(p + "d", b->size());
       b->v = r.vectors(p + "v", b->size());
       b->inertia = r.reals(p + "inertia", b->size());
-      if (b->director) b->director->h = r.vectors(p + "director", b->size());
+      for (std::size_t i = 0; i < b->inertia.size(); ++i)
+        if (!(b->inertia[i] > 0.0))
+          fail(fmt::format("body '{}' particle {} has inertia {}, expected a positive mass", b->name, i,
+                           b->inertia[i]));
+      if (b->director) {
+        b->director->h = r.vectors(p + "director", b->size());
+        // The step keeps |h| = 1 (Eq. 7 renormalised): another length is a damaged file.
+        for (std::size_t i = 0; i < b->size(); ++i)
+          if (!(std::abs(b->director->h[i].norm() - 1.0) <= 1e-9))
+            fail(fmt::format("body '{}' particle {} has a director of length {}, expected a unit vector", b->name,
+                             i, b->director->h[i].norm()));
+      }
       b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
     }
     for (std::size_t k = 0; k < world.terms.size(); ++k) world.terms[k]->load_state(r.record(term_prefix(k)));

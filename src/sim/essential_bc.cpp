@@ -7,6 +7,7 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -47,6 +48,22 @@ struct EssentialBC::Group {
       for (Index k = cf_offset[r]; k < cf_offset[r + 1]; ++k)
         if (cf_col[static_cast<std::size_t>(k)] >= begin && cf_col[static_cast<std::size_t>(k)] < end)
           owned_entries.emplace_back(r, k);
+  }
+
+  // max |Lambda_CC^-1 Lambda_CF z| over four fixed patterns z of +-1 on the free
+  // particles (the columns of Lambda_CF) (EssentialBC::amplification): a pattern per bit of a
+  // hash of the particle's number, so that neighbours move alike and apart in turn.
+  double amplification() const {
+    constexpr int kPatterns = 4;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(size(), kPatterns);
+    for (std::size_t r = 0; r < particles.size(); ++r)
+      for (Index k = cf_offset[r]; k < cf_offset[r + 1]; ++k) {
+        const auto I = static_cast<std::uint64_t>(cf_col[static_cast<std::size_t>(k)]);
+        const std::uint64_t hash = (I + 1) * 0x9e3779b97f4a7c15ULL;
+        for (int p = 0; p < kPatterns; ++p)
+          rhs(static_cast<Eigen::Index>(r), p) += ((hash >> (59 - p)) & 1u ? 1.0 : -1.0) * cf_val[static_cast<std::size_t>(k)];
+      }
+    return size() == 0 ? 0.0 : Eigen::MatrixXd(lu.solve(rhs)).cwiseAbs().maxCoeff();
   }
 
   // y[r] = (Lambda_CF z)_r for this rank's rows, every component; on several ranks the
@@ -140,6 +157,7 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
       }
     }
     components_ += g->particles.size() * g->axes.size();
+    amplification_ = std::max(amplification_, g->amplification());
   }
 }
 

@@ -131,6 +131,11 @@ void Integrator::initialize() {
   if (settings_.mode == Mode::Relax && settings_.mass_scaling) {
     scale_masses();  // the forces do not depend on the masses; the accelerations follow
   }
+  for (const auto& bp : world_.bodies)
+    constraint_amplification_ = std::max(constraint_amplification_, bp->constraints.amplification());
+  constraint_amplification_ = world_.comm->max(constraint_amplification_);
+  if (settings_.stable_step_auto && constraint_amplification_ > kAmplifyingConstraints)
+    settings_.measured_stable_step = true;
   if (settings_.measured_stable_step) calibrate_stable_step();
   scale_inertia_for_terms();
   stable_dt_ = estimate_stable_dt();
@@ -497,7 +502,7 @@ bool Integrator::converged() const {
 // Every rank checks its own particles; the lowest rank that finds a failure states the
 // diagnosis and every rank throws it (one voice, the same exit on every rank).
 void Integrator::check_state() {
-  enum Reason { None = 0, NonFinitePosition, NonFiniteVelocity, Inverted, Runaway };
+  enum Reason { None = 0, NonFinitePosition, NonFiniteVelocity, NonFiniteForce, Inverted, Runaway };
   const double limit2 = settings_.domain_size * settings_.domain_size;
   double min_J = std::numeric_limits<double>::infinity();
   std::string diagnosis;
@@ -509,17 +514,22 @@ void Integrator::check_state() {
       const double J = b.F[i].determinant();
       min_J = std::min(min_J, J);
       const Vec3 x = nodal_position(b, i);
-      const bool bad = !x.allFinite() || !b.v[i].allFinite() || !(J > 0.0) || (x - centre_).squaredNorm() > limit2;
+      // A force that overflowed (an extreme modulus, activity or load) is caught here,
+      // before it reaches a position or any output.
+      const bool bad = !x.allFinite() || !b.v[i].allFinite() || !b.force[i].allFinite() || !(J > 0.0) ||
+                       (x - centre_).squaredNorm() > limit2;
       if (bad) first = std::min(first, i);
     }
     if (first == std::numeric_limits<Index>::max()) continue;
     const double J = b.F[first].determinant();
     const Vec3 x = nodal_position(b, first);
-    const Reason why = !x.allFinite()            ? NonFinitePosition
-                       : !b.v[first].allFinite() ? NonFiniteVelocity
-                       : !(J > 0.0)              ? Inverted
-                                                 : Runaway;
+    const Reason why = !x.allFinite()                ? NonFinitePosition
+                       : !b.v[first].allFinite()     ? NonFiniteVelocity
+                       : !b.force[first].allFinite() ? NonFiniteForce
+                       : !(J > 0.0)                  ? Inverted
+                                                     : Runaway;
     const char* what[] = {"", "position is not finite", "velocity is not finite",
+                          "the force is not finite (it overflowed: an extreme modulus, activity, load or state)",
                           "the deformation gradient is inverted or degenerate (J <= 0 or NaN)",
                           "the particle left the domain (runaway motion)"};
     const Vec3 X = b.cloud.X[first];

@@ -1,5 +1,7 @@
 #include "rkpm/sim/output.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -42,6 +44,31 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   out[12] = b.F[J].determinant();
   stress_at(b, static_cast<std::size_t>(J), out + 13, out[22]);
   std::copy_n(h.data(), 3, out + 23);
+}
+
+// The first point of the frame with a position or field value that is not finite,
+// named by its body and particle (the body_id and particle_id fields, 2 and 3).
+void require_finite(const World& world, const std::vector<Vec3>& positions,
+                    const std::vector<io::PointField>& fields) {
+  for (std::size_t p = 0; p < positions.size(); ++p) {
+    std::string what;
+    if (!positions[p].allFinite()) what = fmt::format("its position is ({}, {}, {})", positions[p].x(),
+                                                      positions[p].y(), positions[p].z());
+    for (std::size_t f = 0; f < fields.size() && what.empty(); ++f) {
+      const auto nc = static_cast<std::size_t>(fields[f].components);
+      for (std::size_t c = 0; c < nc; ++c)
+        if (const double v = fields[f].values[p * nc + c]; !std::isfinite(v)) {
+          what = fmt::format("'{}' (component {}) is {}", fields[f].name, c, v);
+          break;
+        }
+    }
+    if (what.empty()) continue;
+    const auto body = static_cast<std::size_t>(fields[2].values[p]);
+    const auto particle = static_cast<std::int64_t>(fields[3].values[p]);
+    throw io::NonFiniteValue(fmt::format(
+        "body '{}', particle {}: {} (an overflow: an extreme modulus, activity, anisotropy or load, or a blown-up state)",
+        body < world.bodies.size() ? world.bodies[body]->name : "?", particle, what));
+  }
 }
 
 }  // namespace
@@ -135,6 +162,7 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   if (cells == CellOutput::Points) frame.cells = io::vertex_cells(positions.size());
   frame.points = &positions;
   fields.resize(n_fields);
+  require_finite(world, positions, fields);
   frame.point_fields = std::move(fields);
   return frame;
 }

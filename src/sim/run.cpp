@@ -259,7 +259,11 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   if (integrator.dt_clamped())
     log << fmt::format("warning: [integrator] dt = {:.3g} s exceeds the stable step {:.3g} s; using {:.3g} s\n",
                        settings.dt, integrator.stable_dt(), integrator.dt());
-  if (settings.measured_stable_step)
+  if (integrator.measures_stable_step() && !settings.measured_stable_step)
+    log << fmt::format("note: the essential boundary conditions amplify (a unit motion of the free coordinates "
+                       "moves a constrained one by {:.3g}): the stable step is measured (stable_step = \"auto\")\n",
+                       integrator.constraint_amplification());
+  if (integrator.measures_stable_step())
     log << fmt::format("stable step {:.4g} s: measured 2 / omega_max, {:.3g} x the wave-speed estimate\n",
                        integrator.stable_dt(), integrator.stable_step_calibration());
 
@@ -282,7 +286,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       });
     } else {
       // Each rank's piece, then the .pvtu and the .pvd once all pieces are on disk.
-      const io::Frame piece = make_frame(*world, cells, positions);
+      io::Frame piece;
+      collective_output(comm, [&] { piece = make_frame(*world, cells, positions); });
       collective_output(comm, [&] { series->write_piece(world->time, piece, comm.rank()); });
       collective_output(comm, [&] { series->add_parallel_frame(world->time, piece, comm.size()); });
       collective_output(comm, [&] { history->record(*world, integrator); });
@@ -384,7 +389,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   json.set("force_evaluations", integrator.force_evaluations());
   if (!relax) json.set("motion_limited_steps", integrator.motion_limited_steps());
   if (relax) json.set("fire_step_backs", integrator.step_backs());
-  if (settings.measured_stable_step) {
+  if (integrator.measures_stable_step()) {
     json.set("stable_step_calibration", integrator.stable_step_calibration());
     json.set("stable_step_calibrations", integrator.calibrations());
   }

@@ -62,10 +62,32 @@ geo_scene calls $'SetFactory("OpenCASCADE");\nBox(1) = {0, 0, 0, 1, 1, 1};\nSyst
 expect 2 "'SystemCall' is not allowed" -- "$rkpm" check "$work/calls.toml"
 [ -e "$work/pwned" ] && { echo "FAIL: the .geo script ran its command"; failures=$((failures + 1)); }
 
-# A body force that overflows the energies: exit 3 with the step and the quantity, and
-# no infinity written to history.csv.
-sed -e 's/acceleration = .*/acceleration = [0.0, 0.0, -1e300]/' "$sag" >"$work/overflow.toml"
-expect 3 "non-finite value" -- "$rkpm" run "$work/overflow.toml" --out "$work/overflow" --quiet
+# A body force beyond the table's bound is refused with the key; a modulus that
+# overflows the stress: exit 3 naming the step, the body, the particle and the field,
+# and no infinity written to history.csv.
+sed -e 's/acceleration = .*/acceleration = [0.0, 0.0, -1e300]/' "$sag" >"$work/huge_load.toml"
+expect 2 "acceleration = [0, 0, -1e+300]: expected an array of 3 reals, each in" -- "$rkpm" check "$work/huge_load.toml"
+cat >"$work/overflow.toml" <<'TOML'
+[scene]
+name = "overflow"
+[integrator]
+t_end = 1e-6
+[[body]]
+name = "cell"
+[body.cloud]
+generator = "sphere"
+radius = 2e-6
+cells = 4
+[body.material]
+model = "lce"
+mu = 1e4
+bulk = 1e5
+zeta = -1e300
+[body.director]
+initial = "surface_normal"
+TOML
+expect 3 "non-finite value reached the output at step 0 (t = 0 s): body 'cell', particle" -- \
+  "$rkpm" run "$work/overflow.toml" --out "$work/overflow" --quiet
 if [ ! -s "$work/overflow/history.csv" ]; then
   echo "FAIL: the overflowing run wrote no history.csv to check"; failures=$((failures + 1))
 elif grep -qiE "inf|nan" "$work/overflow/history.csv"; then

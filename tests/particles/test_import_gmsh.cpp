@@ -40,6 +40,9 @@ std::string tet_box(int order) {
          ";\nPhysical Surface(\"bottom\") = Surface In BoundingBox{-0.01, -0.01, -0.01, 2.01, 1.01, 0.01};\n";
 }
 
+// The same box with no option of its own, as an untrusted script may be.
+std::string tet_box_untrusted() { return "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 2, 1, 1};\n"; }
+
 // Two positively oriented tetrahedra sharing the face (2, 3, 4), format 2.2, with the
 // triangle (1, 2, 3) in the physical surface "base"; `tets` replaces their element lines.
 std::string two_tets(const std::string& tets = "2 4 2 2 1 1 2 3 4\n3 4 2 2 1 2 3 4 5\n") {
@@ -124,6 +127,9 @@ TEST(ImportGmsh, BadFilesAreRefusedNamingTheFileAndElement) {
                              "$Elements\n1\n1 2 2 1 1 1 2 3\n$EndElements\n"),
                   1.0, 0.0},
                  {"has no volume elements"});
+  std::string nan_node = two_tets();
+  nan_node.replace(nan_node.find("5 1 1 1"), 7, "5 1 nan 1");
+  expect_refused({write_file("nan.msh", nan_node), 1.0, 0.0}, {"node 5 has a coordinate that is not a finite number"});
   expect_refused({write_file("no_size.geo", tet_box(1)), 1.0, 0.0, true}, {"a .geo file needs a mesh size"});
 }
 
@@ -217,6 +223,22 @@ TEST(ImportGmsh, TheGeoEstimateBoundsAThinSlab) {
   const Cloud c = import_gmsh({path, 1.0, 0.5});
   EXPECT_GE(estimate, static_cast<double>(c.size())) << "the pre-flight under-counted the mesh";
   EXPECT_LT(estimate, 20.0 * static_cast<double>(c.size())) << "the estimate is no longer a bound worth the name";
+}
+
+// Gmsh runs in a child process: a file that crashes Gmsh's reader (found by fuzz_msh)
+// is refused naming the file, and a file it stopped reading, which in one process left
+// Gmsh's state broken (every later .geo read as empty), does not spoil the next import.
+TEST(ImportGmsh, AFileThatCrashesGmshIsRefusedNamingTheFile) {
+  const std::string path = RKPM_SOURCE_DIR "/tests/fuzz/corpus/msh/regression-gmsh-crash-2.msh";
+  expect_refused({path, 1.0, 0.0}, {"Gmsh crashed (", "expected a valid Gmsh file"});
+}
+
+TEST(ImportGmsh, AFileGmshStoppedReadingDoesNotSpoilTheNext) {
+  expect_refused({write_file("wrong_node.msh", two_tets("2 4 2 2 1 1 2 3 4\n3 4 2 2 1 2 3 4 9\n")), 1.0, 0.0},
+                 {"Wrong node index 9"});
+  const Cloud c = import_gmsh({write_file("after.geo", tet_box_untrusted()), 1.0, 0.5});
+  EXPECT_GT(c.size(), 8u);
+  EXPECT_NEAR(total_volume(c), 2.0, 1e-9);
 }
 
 }  // namespace

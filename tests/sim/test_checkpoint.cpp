@@ -281,5 +281,22 @@ TEST(Checkpoint, ANegativeStepOrANonFiniteClockIsRefused) {
   fs::remove_all(dir);
 }
 
+// Forged state (found with fuzz_checkpoint): a NaN or an infinity in any real field, a
+// non-positive mass, would reach the output through the run; refused, named.
+TEST(Checkpoint, ANonFiniteValueOrANonPositiveMassIsRefused) {
+  const fs::path dir = testing::fresh_dir("checkpoint_values");
+  const fs::path file = dir / "state.bin";
+  const std::string prefix = "checkpoint " + file.string() + ": ";
+  EXPECT_EQ(read_into(cube(), cube(), file,
+                      [](World& w, RunClock&) { w.bodies[0]->v[7].y() = std::numeric_limits<double>::quiet_NaN(); }),
+            prefix + "field 'body.cube.v' holds nan at value 22, expected a finite number");
+  EXPECT_EQ(read_into(cube(), cube(), file,
+                      [](World& w, RunClock&) { w.bodies[0]->d[0].x() = -std::numeric_limits<double>::infinity(); }),
+            prefix + "field 'body.cube.d' holds -inf at value 0, expected a finite number");
+  EXPECT_EQ(read_into(cube(), cube(), file, [](World& w, RunClock&) { w.bodies[0]->inertia[3] = 0.0; }),
+            prefix + "body 'cube' particle 3 has inertia 0, expected a positive mass");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rkpm::sim

@@ -34,6 +34,9 @@ struct IntegratorSettings {
   bool mass_scaling = false;     // relax only: scale_inertia to the median particle step (body.hpp)
   bool contact_mass_scaling = false;  // relax only: terms raise their particles' inertia to the bodies' step (Term::scale_inertia_to)
   bool measured_stable_step = false;  // the wave-speed step calibrated by the measured omega_max (stable_step.hpp)
+  // stable_step = "auto": initialize() measures the step when a body's essential
+  // boundary conditions amplify (EssentialBC::amplification() above kAmplifyingConstraints).
+  bool stable_step_auto = false;
   std::int64_t stable_step_interval = 10;  // steps between two estimates of the stable step
   bool allow_unstable_dt = false;    // testing only: keep a dt above the stable estimate
   double domain_size = 0.0;      // particles farther than this from the initial centre are runaway [m]
@@ -99,6 +102,14 @@ class Integrator {
   // the last calibration (1 without the setting), and the calibrations made so far.
   double stable_step_calibration() const { return calibration_; }
   std::int64_t calibrations() const { return calibrations_; }
+  // Whether the step is measured (stable_step = "measured", or "auto" with amplifying
+  // constraints: known after initialize()).
+  bool measures_stable_step() const { return settings_.measured_stable_step; }
+  // The largest EssentialBC::amplification() over the bodies and ranks (after initialize()).
+  double constraint_amplification() const { return constraint_amplification_; }
+  // Above this, "auto" measures the step: a unit motion of the free coordinates moves
+  // a constrained one by more than a unit (on a lattice it is about 0.1).
+  static constexpr double kAmplifyingConstraints = 1.0;
   // Steps between two calibrations of a run that measures its stable step.
   static constexpr std::int64_t kCalibrateEvery = 1000;
   // Dynamic runs: no particle moves more than this fraction of its spacing in one step.
@@ -181,6 +192,7 @@ class Integrator {
   double reference_energy_ = 0.0;           // sum over bodies of mu V (the kinetic measure's scale)
   double unscaled_stable_dt_ = 0.0;  // the stable step before mass scaling (for the report)
   double calibration_ = 1.0;         // applied to bodies_wave_dt() (measured_stable_step)
+  double constraint_amplification_ = 0.0;
   double motion_dt_ = std::numeric_limits<double>::infinity();  // motion_limited_dt() after the last step
   std::int64_t motion_limited_steps_ = 0;
   std::int64_t force_evaluations_ = 0;

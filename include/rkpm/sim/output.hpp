@@ -18,6 +18,9 @@ enum class CellOutput { Mesh, Points };
 // Distributed: this rank's piece, its own particles and, after them, the other nodes of
 // the elements it writes (those whose lowest node it owns), whose values come from
 // their owners; a node at a piece boundary thus appears in more than one piece.
+// A value that is not finite (a stress that overflowed at an extreme but accepted
+// parameter, a blown-up state) throws io::NonFiniteValue naming the body, the
+// particle, the field and the value, before anything is written.
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions);
 
 }  // namespace rkpm::sim

@@ -22,8 +22,9 @@ const scene::SettingsTable<Settings>& settings_table() {
                   .help("Penalty bulk modulus K that replaces the pressure p of Eq. 3 (p = -K ln J / J). "
                         "No default: it must be chosen relative to mu (100 to 1000 mu is nearly incompressible)."))
           .bind(&Settings::s,
-                ParamSpec::real("s", "-").greater_than(0).at_most(100).defaults(2.0)
-                  .help("Step-length anisotropy s = l_parallel / l_perpendicular (Eq. 2); 1 = isotropic."))
+                ParamSpec::real("s", "-").at_least(0.01).at_most(100).defaults(2.0)
+                  .help("Step-length anisotropy s = l_parallel / l_perpendicular (Eq. 2); 1 = isotropic. "
+                        "Bounded on both sides alike: the stress carries 1/s, which overflows as s goes to 0."))
           .bind(&Settings::kappa,
                 ParamSpec::real("kappa", "N").at_least(0).defaults(0.0).help("Frank modulus kappa (Eq. 2)."))
           .bind(&Settings::mobility,

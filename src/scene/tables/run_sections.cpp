@@ -64,8 +64,11 @@ ParamTable integrator_section() {
           .help("Time step; 0 = automatic, dt_safety times the stable step of the current state."),
       ParamSpec::real("dt_safety", "-").greater_than(0).at_most(1).defaults(0.5)
           .help("Fraction of the estimated stable time step that is taken when dt = 0."),
-      ParamSpec::choice("stable_step", {"wave_speed", "measured"}).defaults(std::string("wave_speed"))
-          .help("How the stable step is estimated. wave_speed: the shortest spacing over the material's "
+      ParamSpec::choice("stable_step", {"auto", "wave_speed", "measured"}).defaults(std::string("auto"))
+          .help("How the stable step is estimated. auto: wave_speed, but measured when a body's essential "
+                "boundary conditions amplify (their transformation moves a constrained coordinate by more "
+                "than a free one moves: a coarse unstructured tetrahedral cloud with a fixed face, whose "
+                "true stable step can be a third of the wave-speed step; docs/verification/stability.md). wave_speed: the shortest spacing over the material's "
                 "wave speed at each particle, each term's own limit, and an LCE director's (2 / (L times its stiffness), docs/verification/stability.md). measured: the bodies' wave-speed "
                 "step calibrated by 2 / omega_max, the largest natural frequency of the discretisation and "
                 "the terms, measured by power iteration at the start and every 1000 steps (a few tens of "

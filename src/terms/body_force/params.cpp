@@ -14,7 +14,9 @@ const scene::SettingsTable<BodyForceSettings>& settings_table() {
           .bind(&BodyForceSettings::body, ParamSpec::text("body").mark_required().refers_to(Reference::body)
                                      .help("The body it acts on."))
           .bind(&BodyForceSettings::acceleration,
-                ParamSpec::vec3("acceleration", "m/s^2").mark_required().help("Acceleration g."));
+                ParamSpec::vec3("acceleration", "m/s^2").at_least(-1e15).at_most(1e15).mark_required()
+                  .help("Acceleration g. Each component within 1e15 m/s^2 (10^14 g), so that the forces and "
+                        "the relaxation's residual stay finite."));
   return table;
 }
 
