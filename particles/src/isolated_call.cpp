@@ -21,6 +21,10 @@
 #endif
 #endif
 
+// Set by libFuzzer (and any sanitizer runtime) to save the input when the process dies;
+// weak, so that a build without them links.
+extern "C" __attribute__((weak)) void __sanitizer_set_death_callback(void (*)(void));
+
 namespace rkpm::particles {
 
 std::size_t ByteReader::checked_count(std::size_t unit) {
@@ -66,6 +70,9 @@ void apply_limits(const ChildLimits& limits) {
 }
 
 [[noreturn]] void child(int fd, const std::function<void(ByteWriter&)>& work, const ChildLimits& limits) {
+  // A crash here is the answer, not the parent's death: under a fuzzer, the inherited
+  // death callback would save the input as if the fuzzed process had crashed.
+  if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
   apply_limits(limits);
   std::string answer;
   try {
