@@ -33,6 +33,9 @@ packages=(
   libbenchmark-dev                 # Google Benchmark: bench/
   gnuplot-nox                      # PNG plots of the studies
   python3 jq                       # the studies' tables (summary.json, history.csv)
+  pybind11-dev python3-dev         # the Python module rkpm (python/)
+  python3-numpy python3-pytest     # its arrays and its tests
+  python3-matplotlib               # the Python examples' plots
 )
 if [ "$fuzz" = 1 ]; then
   packages+=(

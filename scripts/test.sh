@@ -3,7 +3,8 @@
 # Usage: scripts/test.sh [--fast | --sanitizers | --all]
 #   (none)        the newcomer's check: the Release build and its whole test suite,
 #                 then the installed library (cmake --install, examples/embedding built
-#                 against it and run) and one ParaView picture rendered headless and
+#                 against it and run, the Python module's tests against the installed
+#                 module) and one ParaView picture rendered headless and
 #                 checked not blank (scripts/render-pictures.sh --check).
 #   --fast        the Release build and the tests labelled `fast` only (about a minute
 #                 once built): what a developer runs between edits.
@@ -42,6 +43,13 @@ installed_library() {
   cmake -S "$here/examples/embedding" -B "$build/embedding" -DCMAKE_PREFIX_PATH="$build/install" >/dev/null
   cmake --build "$build/embedding" -j"$jobs"
   "$build/embedding/embed_rkpm"
+  echo "== Installed Python module: the pytest suite against 'cmake --install', with Debian's python3"
+  local site
+  site=$(cd "$build/install" && ls -d lib/python3*/dist-packages)
+  (cd "$build" && PYTHONPATH="$build/install/$site" RKPM_SOURCE_DIR="$here" RKPM_BIN="$build/install/bin/rkpm" \
+    /usr/bin/python3 -c 'import rkpm, sys; sys.exit(0 if rkpm.__file__.startswith(sys.argv[1]) else 1)' "$build/install" &&
+    PYTHONPATH="$build/install/$site" RKPM_SOURCE_DIR="$here" RKPM_BIN="$build/install/bin/rkpm" \
+    /usr/bin/python3 -m pytest -q -p no:cacheprovider "$here/python/tests")
 }
 
 paraview_check() {

@@ -46,6 +46,39 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   std::copy_n(h.data(), 3, out + 23);
 }
 
+}  // namespace
+
+BodyFields body_fields(const Body& b) {
+  BodyFields f;
+  const std::size_t n = static_cast<std::size_t>(b.owned_end() - b.owned_begin());
+  for (auto* v : {&f.position, &f.displacement, &f.velocity, &f.director}) v->resize(3 * n);
+  f.volume.resize(n);
+  f.J.resize(n);
+  f.von_mises.resize(n);
+  f.cauchy_stress.resize(9 * n);
+  // A distributed body's interpolation reads its ghosts' current values.
+  std::vector<Vec3> d = b.d, v = b.v;
+  if (b.distributed()) {
+    b.ghosts.pull(d);
+    b.ghosts.pull(v);
+  }
+  double record[kRecord];
+  for (std::size_t k = 0; k < n; ++k) {
+    point_record(b, b.owned_begin() + static_cast<Index>(k), d, v, record);
+    std::copy_n(record, 3, &f.position[3 * k]);
+    std::copy_n(record + 3, 3, &f.displacement[3 * k]);
+    std::copy_n(record + 6, 3, &f.velocity[3 * k]);
+    f.volume[k] = record[11];
+    f.J[k] = record[12];
+    std::copy_n(record + 13, 9, &f.cauchy_stress[9 * k]);
+    f.von_mises[k] = record[22];
+    std::copy_n(record + 23, 3, &f.director[3 * k]);
+  }
+  return f;
+}
+
+namespace {
+
 // The first point of the frame with a position or field value that is not finite,
 // named by its body and particle (the body_id and particle_id fields, 2 and 3).
 void require_finite(const World& world, const std::vector<Vec3>& positions,

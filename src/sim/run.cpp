@@ -160,7 +160,8 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   for (const auto& w : world->setup_warnings) log << "warning: " << w << "\n";
   IntegratorSettings settings = integrator_settings(scene);
   settings.allow_unstable_dt = options.allow_unstable_dt;
-  Integrator integrator(*world, settings);
+  auto integrator_owner = std::make_unique<Integrator>(*world, settings);
+  Integrator& integrator = *integrator_owner;
   const bool relax = settings.mode == Mode::Relax;
   const double t_end = scene.integrator.has("t_end") ? scene.integrator.real("t_end") : INFINITY;
   const double every = scene.output.has("every") ? scene.output.real("every") : t_end / 50.0;
@@ -329,6 +330,11 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       if (!options.quiet)
         progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
                         relax ? relax_progress(integrator, settings) : std::string());
+      if (options.after_step && !options.after_step(*world, integrator)) {
+        status = "interrupted";
+        code = kIncomplete;
+        break;
+      }
     }
     if (relax && settings.newton_krylov_finish && code == kSuccess && status == "completed") {
       if (!options.quiet) progress.finish();
@@ -459,6 +465,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   if (code == kSuccess || code == kIncomplete)
     log << fmt::format("{} after {} steps, t = {:.6g} s, {:.1f} s wall. ParaView: {}\n", status, world->step,
                        world->time, summary.wall_time, series->pvd_path().string());
+  if (options.keep) {
+    options.keep->world = std::move(world);
+    options.keep->integrator = std::move(integrator_owner);
+  }
   return code;
 }
 

@@ -78,7 +78,7 @@ TEST_P(FuzzReplay, InputsComeBackAcceptedOrRefused) {
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzReplay,
                          ::testing::Values(Replay{"scene", scene_text}, Replay{"vtu", vtu_file},
                                            Replay{"msh", msh_file}, Replay{"geo", geo_file}),
-                         [](const auto& info) { return std::string(info.param.target); });
+                         [](const auto& test_info) { return std::string(test_info.param.target); });
 
 TEST(FuzzReplay, CheckpointInputs) {
   // A checkpoint of this build is accepted (the committed seeds may predate a format

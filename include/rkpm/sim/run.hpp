@@ -4,10 +4,14 @@
 
 #include "rkpm/par/comm.hpp"
 #include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/integrator.hpp"
 #include "rkpm/sim/preflight.hpp"
+#include "rkpm/sim/world.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 
 namespace rkpm::sim {
@@ -23,6 +27,13 @@ enum ExitCode : int {
                      // the frames listed in the .pvd are complete, the last checkpoint is usable
 };
 
+// A run's world and integrator at its end, for a caller that reads the final state or
+// steps on (the Python module). The integrator refers to the world.
+struct RunState {
+  std::unique_ptr<World> world;
+  std::unique_ptr<Integrator> integrator;
+};
+
 struct RunOptions {
   std::filesystem::path out_dir;      // where frames, checkpoints and summary.json go
   std::filesystem::path restart;      // checkpoint to resume from (empty: start fresh)
@@ -35,6 +46,13 @@ struct RunOptions {
   // frame and its own checkpoint (`checkpoint.bin.<rank>`; `restart` names the file
   // without the suffix).
   const par::Comm* comm = &par::Comm::world();
+  // Called after every step of the main loop (not the nested levels'); returning false
+  // stops the run there, as --max-steps does, with the status "interrupted" and exit
+  // code kIncomplete: the final frame and summary.json are written.
+  std::function<bool(const World&, const Integrator&)> after_step;
+  // When set, receives the world and the integrator at the end of a run that got past
+  // its set-up, instead of their being destroyed.
+  RunState* keep = nullptr;
 };
 
 // Runs the scene; messages go to `log` (progress, warnings, diagnoses). Returns an ExitCode.

@@ -1,0 +1,142 @@
+"""Runs from Python: the neo-Hookean closed form, the same bits as `rkpm run`, the
+fields against the frames, interruption, and no memory growth over many runs."""
+import filecmp
+import math
+import os
+import pathlib
+import signal
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import rkpm
+from conftest import bar_scene
+from vtu_frames import read_point_fields
+
+MU, LAMBDA = 1000.0, 4000.0
+
+
+def closed_form_stretch(tension):
+    """Uniaxial tension of W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2 with free
+    sides: mu (l^2 - t^2) / J = T and mu (t^2 - 1) + lambda ln J = 0 (Newton)."""
+    l, t = 1.0, 1.0
+    for _ in range(50):
+        def residual(a, b):
+            J = a * b * b
+            return np.array([MU * (a * a - b * b) / J - tension, MU * (b * b - 1.0) + LAMBDA * math.log(J)])
+        r = residual(l, t)
+        h = 1e-7
+        jac = np.column_stack([(residual(l + h, t) - r) / h, (residual(l, t + h) - r) / h])
+        l, t = np.array([l, t]) - np.linalg.solve(jac, r)
+    return l
+
+
+def test_a_relaxed_bar_matches_the_neo_hookean_closed_form():
+    sim = rkpm.Simulation.from_dict(bar_scene(300.0), threads=2)
+    assert sim.relax()
+    X = sim.reference_positions("bar")
+    u = sim.displacement("bar")
+    left, right = X[:, 0] < 1e-12, X[:, 0] > 1.0 - 1e-12
+    stretch = 1.0 + u[right, 0].mean() - u[left, 0].mean()
+    expected = closed_form_stretch(300.0)
+    assert abs(stretch - expected) / (expected - 1.0) < 1e-3
+
+
+def test_arrays_have_their_shapes_and_match_the_last_frame(sag_scene, tmp_path):
+    sim = rkpm.Simulation.from_file(sag_scene, threads=2)
+    assert sim.run(out=str(tmp_path)) == 0
+    frames = sorted(tmp_path.glob("frames_*.vtu"))
+    frame = read_point_fields(frames[-1])
+    n = len(sim.reference_positions("block"))
+    order = frame["particle_id"].astype(int)  # the frame's points by particle number
+    assert (order == np.arange(n)).all()
+    expected = {
+        "positions": (sim.positions("block"), frame["Points"]),
+        "displacement": (sim.displacement("block"), frame["displacement"]),
+        "velocity": (sim.velocity("block"), frame["velocity"]),
+        "J": (sim.J("block"), frame["J"]),
+        "von_mises": (sim.von_mises("block"), frame["von_mises"]),
+        "volume": (sim.volume("block"), frame["volume"]),
+        "cauchy_stress": (sim.cauchy_stress("block").reshape(n, 9), frame["cauchy_stress"]),
+    }
+    for name, (ours, theirs) in expected.items():
+        assert ours.dtype == np.float64, name
+        assert ours.shape[0] == n, name
+        assert np.array_equal(ours, theirs), name  # the same values, bit for bit
+    F = sim.deformation_gradient("block")
+    assert F.shape == (n, 3, 3)
+    assert np.allclose(np.linalg.det(F), sim.J("block"), rtol=0, atol=1e-12)
+    assert sim.director("block") is None
+    assert not sim.reference_positions("block").flags.writeable
+
+
+def test_the_same_bits_as_rkpm_run(sag_scene, tmp_path):
+    cli = os.environ.get("RKPM_BIN")
+    if not cli:
+        pytest.skip("RKPM_BIN names the rkpm program to compare with (ctest sets it)")
+    env = dict(os.environ, OMP_NUM_THREADS="2")
+    subprocess.run([cli, "run", sag_scene, "--out", str(tmp_path / "cli"), "--threads", "2", "--quiet"],
+                   check=True, env=env)
+    rkpm.Simulation.from_file(sag_scene, threads=2).run(out=str(tmp_path / "py"))
+    names = sorted(p.name for p in (tmp_path / "cli").iterdir() if p.name != "summary.json")
+    assert "history.csv" in names and any(n.endswith(".vtu") for n in names)
+    match, mismatch, errors = filecmp.cmpfiles(tmp_path / "cli", tmp_path / "py", names, shallow=False)
+    assert mismatch == [] and errors == []
+
+
+def test_a_progress_callback_sees_every_step_and_can_stop_the_run(sag_scene, tmp_path):
+    seen = []
+
+    def progress(step, time):
+        seen.append(step)
+        if step == 5:
+            raise KeyboardInterrupt
+
+    sim = rkpm.Simulation.from_file(sag_scene, threads=1)
+    with pytest.raises(KeyboardInterrupt):
+        sim.run(out=str(tmp_path), progress=progress)
+    assert seen == [1, 2, 3, 4, 5]
+    summary = sim.summary()
+    assert summary["status"] == "interrupted" and summary["steps"] == 5
+    assert sim.step_count == 5  # the state where it stopped
+    assert (tmp_path / "frames.pvd").exists()
+
+
+def test_ctrl_c_stops_a_run_cleanly(sag_scene, tmp_path):
+    # A longer run: the sag scene with a hundred times its end time, interrupted after 0.3 s.
+    sim = rkpm.Simulation.from_file(sag_scene, threads=1)
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            sim.step(10**7)
+    finally:
+        timer.cancel()
+    assert 0 < sim.step_count < 10**7
+
+
+def _rss_kib():
+    for line in open("/proc/self/status"):
+        if line.startswith("VmRSS:"):
+            return int(line.split()[1])
+    raise RuntimeError("no VmRSS in /proc/self/status")
+
+
+def test_no_memory_grows_over_a_hundred_build_and_run_cycles(tmp_path):
+    scene = bar_scene(300.0)
+
+    def cycle(k):
+        sim = rkpm.Simulation.from_dict(scene, threads=1)
+        sim.run(out=str(tmp_path / "run"), max_steps=20)
+        sim.positions("bar")
+        sim.reference_positions("bar")
+
+    for k in range(10):
+        cycle(k)
+    before = _rss_kib()
+    for k in range(100):
+        cycle(k)
+    grown = _rss_kib() - before
+    assert grown < 4096, f"resident memory grew by {grown} KiB over 100 cycles"
