@@ -70,9 +70,12 @@ void apply_limits(const ChildLimits& limits) {
 }
 
 [[noreturn]] void child(int fd, const std::function<void(ByteWriter&)>& work, const ChildLimits& limits) {
-  // A crash here is the answer, not the parent's death: under a fuzzer, the inherited
-  // death callback would save the input as if the fuzzed process had crashed.
+  // A crash here is the answer, not the parent's death: it must end the child with its
+  // signal. The handlers a host installed would report it as the host's own crash (a
+  // fuzzer saves the input as crashing the fuzzed process, Python's faulthandler prints
+  // its stack), and so would a sanitizer's death callback.
   if (__sanitizer_set_death_callback) __sanitizer_set_death_callback(nullptr);
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) ::signal(signal, SIG_DFL);
   apply_limits(limits);
   std::string answer;
   try {
