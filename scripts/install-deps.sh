@@ -35,6 +35,7 @@ packages=(
   python3 jq                       # the studies' tables (summary.json, history.csv)
   pybind11-dev python3-dev         # the Python module rkpm (python/)
   python3-numpy python3-pytest     # its arrays and its tests
+  python3-mpi4py                   # the module under mpirun
   python3-matplotlib               # the Python examples' plots
 )
 if [ "$fuzz" = 1 ]; then

@@ -3,6 +3,7 @@
 #include "arrays.hpp"
 #include "simulation.hpp"
 
+#include "rkpm/par/comm.hpp"
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
 
@@ -66,6 +67,10 @@ PYBIND11_MODULE(_rkpm, m) {
     }
   });
 
+  m.def("_launched_by_mpi", &rkpm::par::Session::launched_by_mpi,
+        "Whether an MPI launcher (mpirun, srun) started this process.");
+  m.def("_join_mpi", &rkpm::par::Session::join_running_mpi,
+        "Makes the MPI that mpi4py initialised rkpm's world: simulations then run on every rank.");
   m.def("params", &parameter_registry,
         "The parameter registry: a list of dicts (section, variant, key, type, unit, default, range, choices, help), "
         "the tables `rkpm params` prints.");
@@ -90,6 +95,9 @@ PYBIND11_MODULE(_rkpm, m) {
            "Steps a relax-mode scene until its criteria hold or max_steps more steps; returns whether they hold.")
       .def("summary", &Simulation::summary, "summary.json of the last run() as a dict.")
       .def("energy", &Simulation::energy, "The energy ledger of the present state as a dict.")
+      .def("shape", &Simulation::shape, py::arg("body"),
+           "The red-blood-cell shape report of a shell body in the present state (`rkpm shape`): the summary's "
+           "\"shape\" entries and \"profile\", a dict of arrays r, thickness, top, bottom, evans_fung [m].")
       .def_property_readonly("time", &Simulation::time, "Simulated time of the present state [s].")
       .def_property_readonly("step_count", &Simulation::steps, "Steps taken to the present state.")
       .def_property_readonly("out_dir", &Simulation::out_dir)

@@ -1,7 +1,10 @@
 #include "simulation.hpp"
 
+#include "arrays.hpp"
+
 #include "rkpm/io/json.hpp"
 #include "rkpm/sim/build.hpp"
+#include "rkpm/sim/history.hpp"
 
 #include <omp.h>
 
@@ -111,6 +114,8 @@ int Simulation::run(const std::optional<std::string>& out, const py::object& pro
     py::gil_scoped_release release;
     use_threads();
     code = sim::run_scene(scene_, options, log);
+    // Every rank returns once the root has written summary.json.
+    par::Comm::world().barrier();
   }
   if (state.world) {
     integrator_ = std::move(state.integrator);
@@ -211,6 +216,45 @@ py::dict Simulation::energy() {
   return d;
 }
 
+py::dict Simulation::shape(const std::string& body_name) {
+  const sim::Body& b = body(body_name);
+  if (b.cloud.surface_bit("outer") == 0u)
+    throw std::invalid_argument("shape(): body '" + body_name + "' has no surface named \"outer\" (a shell cloud has one)");
+  sim::ShapeReport s;
+  {
+    py::gil_scoped_release release;
+    s = sim::final_shape(b, *world_->comm);
+  }
+  py::dict d;
+  d["diameter"] = s.diameter;
+  d["h_min"] = s.h_min;
+  d["h_max"] = s.h_max;
+  d["h_min_over_h_max"] = s.h_min / s.h_max;
+  d["r_hmax_over_R"] = s.r_hmax_over_R;
+  d["updown_asymmetry"] = s.updown_asymmetry;
+  d["axial_asymmetry"] = s.axial_asymmetry;
+  d["volume"] = s.volume;
+  d["area"] = s.area;
+  d["reduced_volume"] = s.reduced_volume;
+  d["rms_vs_evans_fung_over_D"] = s.rms_vs_evans_fung;
+  if (s.has_inner_gap) {
+    d["inner_gap_centre"] = s.inner_gap_centre;
+    d["inner_gap_min"] = s.inner_gap_min;
+    d["wall_thickness_centre"] = s.wall_thickness_centre;
+    d["walls_crossed"] = s.walls_crossed;
+  }
+  d["biconcave"] = s.biconcave;
+  d["matches_evans_fung"] = s.matches_evans_fung;
+  py::dict profile;
+  profile["r"] = copied(std::move(s.r), 1);
+  profile["thickness"] = copied(std::move(s.thickness), 1);
+  profile["top"] = copied(std::move(s.top), 1);
+  profile["bottom"] = copied(std::move(s.bottom), 1);
+  profile["evans_fung"] = copied(std::move(s.evans_fung), 1);
+  d["profile"] = profile;
+  return d;
+}
+
 double Simulation::time() {
   ensure_world();
   return world_->time;
@@ -235,7 +279,7 @@ const sim::Body& Simulation::body(const std::string& name) {
 sim::BodyFields Simulation::fields(const std::string& name) {
   const sim::Body& b = body(name);
   py::gil_scoped_release release;
-  return sim::body_fields(b);
+  return sim::body_fields(b, *world_->comm);
 }
 
 py::capsule Simulation::world_keeper() const {

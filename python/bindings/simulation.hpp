@@ -5,6 +5,7 @@
 
 #include "rkpm/scene/scene.hpp"
 #include "rkpm/sim/output.hpp"
+#include "rkpm/sim/shape_report.hpp"
 #include "rkpm/sim/run.hpp"
 
 #include <pybind11/pybind11.h>
@@ -45,6 +46,9 @@ class Simulation {
   py::dict summary() const;
   // Kinetic, stored, interface and external energy, the ledger's terms and its error.
   py::dict energy();
+  // The red-blood-cell shape report (`rkpm shape`) of a body's surface named "outer" in
+  // the present state: the summary's "shape" entries and the profile as arrays.
+  py::dict shape(const std::string& body_name);
 
   double time();
   long long steps();

@@ -7,12 +7,13 @@ import pathlib
 import signal
 import subprocess
 import threading
+import tomllib
 
 import numpy as np
 import pytest
 
 import rkpm
-from conftest import bar_scene
+from conftest import SOURCE, bar_scene
 from vtu_frames import read_point_fields
 
 MU, LAMBDA = 1000.0, 4000.0
@@ -140,3 +141,32 @@ def test_no_memory_grows_over_a_hundred_build_and_run_cycles(tmp_path):
         cycle(k)
     grown = _rss_kib() - before
     assert grown < 4096, f"resident memory grew by {grown} KiB over 100 cycles"
+
+
+def test_the_history_is_the_csv_file_as_arrays(sag_scene, tmp_path):
+    sim = rkpm.Simulation.from_file(sag_scene, threads=2)
+    sim.run(out=str(tmp_path))
+    history = sim.history()
+    table = np.genfromtxt(tmp_path / "history.csv", delimiter=",", names=True)
+    assert list(history) == list(table.dtype.names)
+    for column in history:
+        assert history[column].dtype == np.float64
+        np.testing.assert_array_equal(history[column], table[column])
+    assert history["step"][-1] == sim.summary()["steps"]
+
+
+def test_the_shape_report_is_the_summary_s(tmp_path):
+    """The red blood cell on a coarse cloud for a few steps: shape() of the state the run
+    ended in gives the summary's "shape" entries and its profile file."""
+    scene = tomllib.loads((SOURCE / "examples" / "rbc" / "rbc.toml").read_text())
+    scene["body"][0]["cloud"]["face_cells"] = 6
+    del scene["integrator"]["nested_levels"]
+    sim = rkpm.Simulation.from_dict(scene, threads=2)
+    sim.run(out=str(tmp_path), max_steps=20)
+    shape, summary = sim.shape("cell"), sim.summary()["shape"]
+    for key, value in summary.items():
+        assert shape[key] == pytest.approx(value, rel=1e-12, abs=0), key
+    profile = np.genfromtxt(tmp_path / "shape_profile.csv", delimiter=",", names=True)
+    np.testing.assert_allclose(shape["profile"]["thickness"], profile["thickness"], rtol=1e-7)
+    with pytest.raises(ValueError, match="no surface named"):
+        rkpm.Simulation.from_file(str(SOURCE / "examples" / "sag" / "sag.toml")).shape("block")

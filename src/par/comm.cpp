@@ -199,6 +199,21 @@ Session::Session(int& argc, char**& argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
   initialised_ = true;
+  adopt_world();
+}
+
+bool Session::join_running_mpi() {
+  int running = 0;
+  MPI_Initialized(&running);
+  if (running == 0) return false;
+  int finished = 0;
+  MPI_Finalized(&finished);
+  if (finished != 0) return false;
+  adopt_world();
+  return true;
+}
+
+void Session::adopt_world() {
   Comm& comm = mutable_world();
   MPI_Comm_rank(MPI_COMM_WORLD, &comm.rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &comm.size_);

@@ -48,7 +48,20 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
 
 }  // namespace
 
-BodyFields body_fields(const Body& b) {
+namespace {
+// A distributed body's owned values (`components` per particle, this rank's share) made
+// the whole field in the one-process numbering: gathered in rank order, then each
+// particle's row moved to its original id.
+void gather_in_original_order(const par::Comm& comm, const std::vector<double>& ids, std::vector<double>& field,
+                              std::size_t components) {
+  const std::vector<double> all = comm.gather(field);
+  field.assign(all.size(), 0.0);
+  for (std::size_t k = 0; k < ids.size(); ++k)
+    std::copy_n(&all[k * components], components, &field[static_cast<std::size_t>(ids[k]) * components]);
+}
+}  // namespace
+
+BodyFields body_fields(const Body& b, const par::Comm& comm) {
   BodyFields f;
   const std::size_t n = static_cast<std::size_t>(b.owned_end() - b.owned_begin());
   for (auto* v : {&f.position, &f.displacement, &f.velocity, &f.director}) v->resize(3 * n);
@@ -73,6 +86,18 @@ BodyFields body_fields(const Body& b) {
     std::copy_n(record + 13, 9, &f.cauchy_stress[9 * k]);
     f.von_mises[k] = record[22];
     std::copy_n(record + 23, 3, &f.director[3 * k]);
+  }
+  if (b.distributed()) {
+    // A body left in the one-process numbering has no original ids (build_world.cpp).
+    // Ids up to 2^53 are exact as doubles.
+    std::vector<double> own_ids;
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
+      own_ids.push_back(static_cast<double>(b.original_id.empty() ? i : b.original_id[static_cast<std::size_t>(i)]));
+    const std::vector<double> ids = comm.gather(own_ids);
+    for (auto* field : {&f.position, &f.displacement, &f.velocity, &f.director})
+      gather_in_original_order(comm, ids, *field, 3);
+    for (auto* field : {&f.volume, &f.J, &f.von_mises}) gather_in_original_order(comm, ids, *field, 1);
+    gather_in_original_order(comm, ids, f.cauchy_stress, 9);
   }
   return f;
 }

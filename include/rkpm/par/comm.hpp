@@ -90,8 +90,12 @@ class Session {
   Session& operator=(const Session&) = delete;
   // True when the environment says an MPI launcher (mpirun, srun) started this process.
   static bool launched_by_mpi();
+  // For a host that initialised MPI itself (Python with mpi4py): Comm::world() becomes
+  // the running MPI's world, which the host finalises. False when MPI is not running.
+  static bool join_running_mpi();
 
  private:
+  static void adopt_world();
   bool initialised_ = false;
 };
 

@@ -21,14 +21,14 @@ enum class CellOutput { Mesh, Points };
 // A value that is not finite (a stress that overflowed at an extreme but accepted
 // parameter, a blown-up state) throws io::NonFiniteValue naming the body, the
 // particle, the field and the value, before anything is written.
-// One body's point fields as a frame writes them (the same values, bit for bit), in
-// this rank's particle order (collective for a distributed body: its ghosts are
-// pulled): on one process the body's own numbering. Each vector
-// holds n x components values, row by row.
+// One body's point fields as a frame writes them (the same values, bit for bit), for
+// every particle in the one-process numbering (a one-rank run's particle order), on
+// every rank: collective for a distributed body, whose ghosts are pulled and whose
+// ranks' values are gathered. Each vector holds n x components values, row by row.
 struct BodyFields {
   std::vector<double> position, displacement, velocity, volume, J, cauchy_stress, von_mises, director;
 };
-BodyFields body_fields(const Body& body);
+BodyFields body_fields(const Body& body, const par::Comm& comm = par::Comm::self());
 
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions);
 
