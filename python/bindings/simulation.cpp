@@ -147,7 +147,7 @@ void Simulation::ensure_world() {
   if (!error.empty()) raise(setup_error(), error);
 }
 
-void Simulation::step(long long n, const py::object& progress) {
+void Simulation::advance(long long n, bool until_converged, const py::object& progress) {
   ensure_world();
   StepWatch watch(progress);
   std::string blew_up;
@@ -155,7 +155,7 @@ void Simulation::step(long long n, const py::object& progress) {
     py::gil_scoped_release release;
     use_threads();
     try {
-      for (long long k = 0; k < n; ++k) {
+      for (long long k = 0; k < n && !(until_converged && converged()); ++k) {
         integrator_->step();
         if (!watch(world_->step, world_->time)) break;
       }
@@ -167,28 +167,16 @@ void Simulation::step(long long n, const py::object& progress) {
   if (!blew_up.empty()) raise(unstable_error(), blew_up);
 }
 
+bool Simulation::converged() const { return world_->step > 0 && integrator_->converged(); }
+
+void Simulation::step(long long n, const py::object& progress) { advance(n, false, progress); }
+
 bool Simulation::relax(long long max_steps, const py::object& progress) {
   if (scene_.integrator.choice("mode") != "relax")
     throw std::invalid_argument("relax(): the scene's [integrator] mode is \"" + scene_.integrator.choice("mode") +
                                 "\"; expected \"relax\" (use step() or run())");
-  ensure_world();
-  StepWatch watch(progress);
-  std::string blew_up;
-  {
-    py::gil_scoped_release release;
-    use_threads();
-    try {
-      for (long long k = 0; k < max_steps && !(world_->step > 0 && integrator_->converged()); ++k) {
-        integrator_->step();
-        if (!watch(world_->step, world_->time)) break;
-      }
-    } catch (const sim::BlowUp& e) {
-      blew_up = e.what();
-    }
-  }
-  watch.raise_if_stopped();
-  if (!blew_up.empty()) raise(unstable_error(), blew_up);
-  return world_->step > 0 && integrator_->converged();
+  advance(max_steps, true, progress);
+  return converged();
 }
 
 py::dict Simulation::summary() const {

@@ -62,6 +62,10 @@ class Simulation {
 
  private:
   void ensure_world();
+  // Up to n steps in memory, stopping early once converged() if until_converged.
+  void advance(long long n, bool until_converged, const py::object& progress);
+  // The relaxation criteria hold (not before the first step).
+  bool converged() const;
   void use_threads() const;
 
   scene::Scene scene_;

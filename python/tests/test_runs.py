@@ -71,6 +71,11 @@ def test_arrays_have_their_shapes_and_match_the_last_frame(sag_scene, tmp_path):
     assert np.allclose(np.linalg.det(F), sim.J("block"), rtol=0, atol=1e-12)
     assert sim.director("block") is None
     assert not sim.reference_positions("block").flags.writeable
+    # Views are the state's memory: two of them share it, and neither owns it.
+    for view in ("reference_positions", "volume", "deformation_gradient"):
+        first, second = getattr(sim, view)("block"), getattr(sim, view)("block")
+        assert not first.flags.owndata and np.shares_memory(first, second), view
+    assert not np.shares_memory(sim.positions("block"), sim.positions("block"))
 
 
 def test_the_same_bits_as_rkpm_run(sag_scene, tmp_path):
