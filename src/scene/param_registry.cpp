@@ -1,5 +1,6 @@
 #include "rkpm/scene/param_registry.hpp"
 
+#include "clouds/catalog.hpp"
 #include "materials/catalog.hpp"
 #include "tables/tables.hpp"
 #include "terms/catalog.hpp"
@@ -32,7 +33,7 @@ ParamRegistry::ParamRegistry() {
   append(tables_, tables::run_sections());
   tables_.push_back(tables::body());
 
-  auto generators = tables::cloud_generators();
+  auto generators = clouds::cloud_tables();
   tables_.push_back(selector_section("body.cloud", "generator", generators,
                                      "The body's particle cloud: a generator or an imported mesh."));
   append(tables_, std::move(generators));

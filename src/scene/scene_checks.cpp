@@ -1,5 +1,6 @@
 #include "scene_checks.hpp"
 
+#include "clouds/catalog.hpp"
 #include "rkpm/scene/param_registry.hpp"
 #include "spelling.hpp"
 
@@ -92,7 +93,7 @@ void check_output(Scene& scene) {
 void check_nested_levels(const Scene& scene) {
   if (scene.integrator.reals("nested_levels").empty()) return;
   for (const auto& body : scene.bodies)
-    if (body.generator() == "vtu" || body.generator() == "gmsh")
+    if (!clouds::can_rescale(body))
       throw scene.integrator.error(
           "nested_levels", fmt::format("[] when a body's cloud is imported (body \"{}\", generator = \"{}\" at "
                                        "line {}): only generated clouds can be coarsened",

@@ -1,6 +1,6 @@
 // Reading a scene file: TOML parsing, the layout of sections, and validation of
 // every table against the registry. Checks across sections are in scene_checks.cpp.
-#include "rkpm/particles/generators.hpp"
+#include "clouds/catalog.hpp"
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "scene_checks.hpp"
@@ -154,8 +154,7 @@ class Loader {
       }
     }
 
-    if (spec.generator() == "vtu") spec.cloud_file = resolve_existing_file(spec.cloud, "file");
-    if (spec.generator() == "gmsh") read_gmsh_file(spec);
+    clouds::load_cloud(spec);
     return spec;
   }
 
@@ -188,31 +187,6 @@ class Loader {
   // its meshes can be moved together.
   // A Gmsh cloud: the file must be one Gmsh reads (.msh or .geo), a .geo needs a mesh
   // size, and its physical surfaces become the names the body's tables may use.
-  void read_gmsh_file(BodySpec& spec) const {
-    const ParamSet& c = spec.cloud;
-    spec.cloud_file = resolve_existing_file(c, "file");
-    const std::string extension = fs::path(spec.cloud_file).extension().string();
-    if (extension != ".msh" && extension != ".geo")
-      throw c.error("file", "a Gmsh file named *.msh (a mesh) or *.geo (a geometry to mesh)");
-    if (extension == ".geo" && !c.has("mesh_size"))
-      throw c.error("file", "a mesh_size key beside a .geo file: the largest element edge to mesh it with");
-    try {
-      spec.file_surfaces = particles::gmsh_surface_names(spec.cloud_file, c.flag("trusted"));
-    } catch (const particles::CloudError& e) {
-      throw c.error("file", std::string("a file Gmsh can read: ") + e.what());
-    }
-  }
-
-  std::string resolve_existing_file(const ParamSet& p, const std::string& key) const {
-    const fs::path given = p.text(key);
-    const fs::path resolved = given.is_absolute() ? given : (fs::path(file_).parent_path() / given).lexically_normal();
-    std::error_code ec;
-    if (!fs::is_regular_file(resolved, ec)) {
-      throw p.error(key, fmt::format("an existing file (resolved to {})", resolved.string()));
-    }
-    return resolved.string();
-  }
-
   const toml::table& root_;
   std::string file_;
 };

@@ -1,12 +1,12 @@
 #include "rkpm/sim/build.hpp"
 
+#include "clouds/catalog.hpp"
 #include "materials/catalog.hpp"
 #include "rkpm/common/split_mix64.hpp"
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/par/partition.hpp"
 #include "rkpm/particles/renumber.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
-#include "rkpm/scene/cloud_recipe.hpp"
 #include "rkpm/sim/body_points.hpp"
 #include "terms/catalog.hpp"
 
@@ -18,13 +18,6 @@
 namespace rkpm::sim {
 
 namespace {
-
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-template <class... Ts>
-Overloaded(Ts...) -> Overloaded<Ts...>;
 
 std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
 
@@ -288,22 +281,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 }  // namespace
 
 particles::Cloud build_cloud(const scene::BodySpec& spec) {
-  particles::Cloud cloud = std::visit(Overloaded{
-                        [](const particles::BlockSpec& s) { return particles::make_block(s); },
-                        [](const particles::SphereSpec& s) { return particles::make_sphere(s); },
-                        [](const particles::ShellSpec& s) { return particles::make_shell(s); },
-                        [](const scene::VtuImport& s) {
-                          particles::Cloud c = particles::import_vtu(s.path);
-                          if (s.scale != 1.0) {
-                            for (auto& x : c.X) x *= s.scale;
-                            for (auto& v : c.volume) v *= s.scale * s.scale * s.scale;
-                            for (auto& a : c.boundary_area) a *= s.scale * s.scale;
-                          }
-                          return c;
-                        },
-                        [](const particles::GmshImportSpec& s) { return particles::import_gmsh(s); },
-                    },
-                    scene::cloud_recipe(spec));
+  particles::Cloud cloud = clouds::make_cloud(spec);
   if (spec.rk.choice("particle_order") == "morton") particles::renumber(cloud, particles::morton_order(cloud.X));
   return cloud;
 }

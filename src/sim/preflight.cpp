@@ -1,8 +1,7 @@
 #include "rkpm/sim/preflight.hpp"
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/particles/generators.hpp"
-#include "rkpm/scene/cloud_recipe.hpp"
+#include "clouds/catalog.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -60,102 +59,14 @@ double support_count(const Vec3& r, const Vec3& h, const Vec3& extent) {
   return std::max(count, 1.0);
 }
 
-// Spacing and extent in the local axes of a cloud: (h along the three axes, extents).
-struct LocalGrid {
-  Vec3 spacing;
-  Vec3 extent;
-  double longest_edge = 0.0;
-};
-
-// The number of points an imported .vtu declares: NumberOfPoints="N" of its pieces.
-double vtu_points(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(1 << 16, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  double total = 0.0;
-  const std::string key = "NumberOfPoints=\"";
-  for (std::size_t at = head.find(key); at != std::string::npos; at = head.find(key, at + key.size())) {
-    total += std::strtod(head.c_str() + at + key.size(), nullptr);
-  }
-  return total;
-}
-
-std::string key_at(const scene::ParamSet& p, const std::string& key) {
-  return fmt::format("{}:{}: [{}] {}", p.file(), p.line(key), p.section(), key);
-}
-
 BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
   BodyEstimate e;
   e.name = spec.name();
   e.generator = spec.generator();
-  const auto& c = spec.cloud;
-  LocalGrid grid;
-  if (e.generator == "block") {
-    const auto cells = c.int3("cells");
-    const Vec3 size = c.vec3("size");
-    e.particles = 1.0;
-    e.elements = 1.0;
-    for (int i = 0; i < 3; ++i) {
-      const auto n = static_cast<double>(cells[static_cast<std::size_t>(i)]);
-      e.particles *= n + 1.0;
-      e.elements *= n;
-      grid.spacing[i] = size[i] / n;
-      grid.extent[i] = size[i];
-    }
-    grid.longest_edge = grid.spacing.maxCoeff();
-    e.size_key = key_at(c, "cells");
-  } else if (e.generator == "sphere") {
-    const auto n = static_cast<double>(c.integer("cells"));
-    const double d = 2.0 * c.real("radius");
-    e.particles = (n + 1.0) * (n + 1.0) * (n + 1.0);
-    e.elements = n * n * n;
-    grid.spacing = Vec3::Constant(d / n);
-    grid.extent = Vec3::Constant(d);
-    // The cube-to-ball map stretches the cells near the cube's corners.
-    grid.longest_edge = 1.2 * d / n;
-    e.size_key = key_at(c, "cells");
-  } else if (e.generator == "shell") {
-    const auto n = static_cast<double>(c.integer("face_cells"));
-    const auto layers = static_cast<double>(c.integer("layers"));
-    const Vec3 semi = c.vec3("semi_axes");
-    const double thickness = c.real("thickness");
-    const double per_layer = 6.0 * n * n + 2.0;
-    e.particles = layers * per_layer;
-    e.elements = 6.0 * n * n * (layers - 1.0);
-    const double area = particles::ellipsoid_area(semi);
-    const double in_plane = std::sqrt(area / per_layer);
-    const double through = thickness / std::max(layers - 1.0, 1.0);
-    grid.spacing = Vec3(in_plane, in_plane, through);
-    grid.extent = Vec3(2.0 * semi.maxCoeff(), 2.0 * semi.maxCoeff(), thickness);
-    // The cubed sphere's edges near its cube corners are the longest.
-    grid.longest_edge = std::max(1.4 * in_plane, through);
-    e.size_key = fmt::format("{} and layers", key_at(c, "face_cells"));
-  } else if (e.generator == "gmsh") {
-    // A Gmsh file: its nodes (.msh) or a bound from its bounding box and mesh size
-    // (.geo); spacing unknown, as for a .vtu below.
-    const auto recipe = std::get<particles::GmshImportSpec>(scene::cloud_recipe(spec));
-    try {
-      e.particles = particles::gmsh_particle_estimate(recipe);
-    } catch (const particles::CloudError& error) {  // a file Gmsh cannot read is bad input
-      throw PreflightError(fmt::format("{}: {}", key_at(c, "file"), error.what()));
-    }
-    e.elements = 6.0 * e.particles;
-    grid.spacing = Vec3::Ones();
-    grid.extent = Vec3::Constant(std::numeric_limits<double>::infinity());
-    grid.longest_edge = 1.0;
-    e.size_key = fmt::format("{} (\"{}\")", key_at(c, spec.cloud.has("mesh_size") ? "mesh_size" : "file"),
-                             spec.cloud_file);
-  } else {
-    // An imported mesh: its declared points; its spacing is unknown here, so the rows
-    // are taken as those of a uniform cloud (support^3 (4/3) pi particles).
-    e.particles = vtu_points(spec.cloud_file);
-    e.elements = e.particles;
-    grid.spacing = Vec3::Ones();
-    grid.extent = Vec3::Constant(std::numeric_limits<double>::infinity());
-    grid.longest_edge = 1.0;
-    e.size_key = fmt::format("{} (\"{}\")", key_at(c, "file"), spec.cloud_file);
-  }
+  const clouds::CloudSize grid = clouds::estimate_cloud(spec);
+  e.particles = grid.particles;
+  e.elements = grid.elements;
+  e.size_key = grid.size_key;
   // A ball reaches support x the longest edge along every axis; an ellipsoid support x the
   // spacing along each (scaled as the longest edge is to the longest mean spacing: the
   // stretched cells near a cubed sphere's corners).

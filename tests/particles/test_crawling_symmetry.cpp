@@ -11,7 +11,8 @@
 #include "tet_mesh.hpp"
 
 #include "rkpm/particles/generators.hpp"
-#include "rkpm/scene/cloud_recipe.hpp"
+#include "clouds/block/spec.hpp"
+#include "clouds/sphere/spec.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,8 +29,7 @@ struct CrawlingClouds {
 
 CrawlingClouds crawling_clouds(bool coarse) {
   const scene::Scene s = rkpm::testing::crawling_scene(coarse);
-  return {std::get<SphereSpec>(scene::cloud_recipe(*s.find_body("cell"))),
-          std::get<BlockSpec>(scene::cloud_recipe(*s.find_body("substrate")))};
+  return {clouds::sphere::spec(*s.find_body("cell")), clouds::block::spec(*s.find_body("substrate"))};
 }
 
 // Round-off bounds: positions come from a handful of operations on exactly

@@ -1,5 +1,8 @@
 // Valid scenes load with the declared defaults, derived values and resolved paths.
-#include "rkpm/scene/cloud_recipe.hpp"
+#include "clouds/block/spec.hpp"
+#include "clouds/shell/spec.hpp"
+#include "clouds/sphere/spec.hpp"
+#include "clouds/vtu/spec.hpp"
 #include "rkpm/scene/scene.hpp"
 #include "scene_text.hpp"
 
@@ -157,24 +160,24 @@ TEST(ValidScene, ExplicitFrameIntervalIsKept) {
   EXPECT_EQ(s.output.choice("cells"), "points");
 }
 
-TEST(CloudRecipe, BlockSphereAndShellSpecsCarryTheSceneValues) {
+TEST(CloudCatalog, BlockSphereAndShellSpecsCarryTheSceneValues) {
   const std::string block = replaced(kBase, "cells = [2, 2, 2]",
                                      "cells = [3, 4, 5]\norigin = [1, 2, 3]\njitter = 0.1\nseed = 7");
-  const auto b = std::get<particles::BlockSpec>(cloud_recipe(parse_scene(block, "ok.toml").bodies[0]));
+  const auto b = clouds::block::spec(parse_scene(block, "ok.toml").bodies[0]);
   EXPECT_EQ(b.origin, Vec3(1, 2, 3));
   EXPECT_EQ(b.size, Vec3::Ones());
   EXPECT_EQ(b.cells, (std::array<int, 3>{3, 4, 5}));
   EXPECT_EQ(b.jitter, 0.1);
   EXPECT_EQ(b.seed, 7u);
 
-  const auto sphere = std::get<particles::SphereSpec>(cloud_recipe(parse_scene(kBase + kLceBody, "ok.toml").bodies[1]));
+  const auto sphere = clouds::sphere::spec(parse_scene(kBase + kLceBody, "ok.toml").bodies[1]);
   EXPECT_EQ(sphere.radius, 5e-6);
   EXPECT_EQ(sphere.cells, 16);
   EXPECT_EQ(sphere.center, Vec3::Zero());
 
   const std::string shell = replaced(kBase, "generator = \"block\"\nsize = [1, 1, 1]\ncells = [2, 2, 2]",
                                      "generator = \"shell\"\nlayers = 3");
-  const auto sh = std::get<particles::ShellSpec>(cloud_recipe(parse_scene(shell, "ok.toml").bodies[0]));
+  const auto sh = clouds::shell::spec(parse_scene(shell, "ok.toml").bodies[0]);
   EXPECT_EQ(sh.semi_axes, Vec3(5e-6, 5e-6, 1.5e-6));
   EXPECT_EQ(sh.thickness, 0.5e-6);
   EXPECT_EQ(sh.face_cells, 32);
@@ -202,7 +205,7 @@ TEST_F(SceneOnDisk, RelativeVtuPathIsResolvedAgainstTheSceneDirectory) {
   write(dir_ / "cell.toml", text);
   const Scene s = load_scene((dir_ / "cell.toml").string());
   EXPECT_EQ(fs::path(s.bodies[0].cloud_file), dir_ / "meshes" / "cell.vtu");
-  const auto vtu = std::get<VtuImport>(cloud_recipe(s.bodies[0]));
+  const auto vtu = clouds::vtu::spec(s.bodies[0]);
   EXPECT_EQ(fs::path(vtu.path), dir_ / "meshes" / "cell.vtu");
   EXPECT_EQ(vtu.scale, 1e-6);
 

@@ -2,6 +2,7 @@
 // model's parameters, the Frank term's arrays of the director field, and the activity.
 #include "materials/lce/body_material.hpp"
 
+#include "clouds/catalog.hpp"
 #include "materials/catalog.hpp"
 #include "materials/lce/body_material_activity.hpp"
 #include "materials/lce/settings.hpp"
@@ -31,7 +32,7 @@ void build(const scene::BodySpec& spec, sim::Body& body) {
     dir.frank_flux.assign(n, Mat3::Zero());
     dir.frank_divergence.assign(n, Vec3::Zero());
   }
-  const double wall_thickness = spec.generator() == "shell" ? spec.cloud.real("thickness") : 0.0;
+  const double wall_thickness = clouds::wall_thickness(spec);
   material.activity = activity_field(s, spec.material, body, wall_thickness, model.zeta);
   body.material = std::move(material);
 }

@@ -11,7 +11,7 @@ namespace rkpm::scene::tables {
 std::vector<ParamTable> run_sections();     // [scene], [integrator], [output]
 ParamTable body();                          // [[body]]
 std::vector<ParamTable> body_details();     // [body.director], [body.rk], [body.initial], [[body.boundary]]
-// The variants of [body.material] come from the material catalog (src/materials/catalog.hpp).
-std::vector<ParamTable> cloud_generators(); // variants of [body.cloud], selected by `generator`
+// The variants of [body.material] and [body.cloud] come from the material and cloud
+// catalogs (src/materials/catalog.hpp, src/clouds/catalog.hpp).
 
 }  // namespace rkpm::scene::tables
