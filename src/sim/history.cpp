@@ -113,7 +113,7 @@ ShapeReport final_shape(const Body& body, const par::Comm& comm) {
   return measure_shape(body.cloud, physical_positions(body, comm), "outer");
 }
 
-void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv, io::Json& summary) {
+io::Json shape_entries(const ShapeReport& s) {
   io::Json j = io::Json::object();
   j.set("diameter", s.diameter);
   j.set("h_min", s.h_min);
@@ -134,7 +134,11 @@ void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv,
   }
   j.set("biconcave", s.biconcave);
   j.set("matches_evans_fung", s.matches_evans_fung);
-  summary.set("shape", j);
+  return j;
+}
+
+void write_shape(const ShapeReport& s, const std::filesystem::path& profile_csv, io::Json& summary) {
+  summary.set("shape", shape_entries(s));
   // The inner surface's columns are left empty in the bins it does not reach.
   std::ofstream out(profile_csv);
   out << "r,thickness,top,bottom,evans_fung,inner_top,inner_bottom\n";

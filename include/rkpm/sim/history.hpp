@@ -42,6 +42,8 @@ class History {
 // The final shape of `body`'s outer surface: summary entries and shape_profile.csv.
 // Distributed: collective, every rank gets the report.
 ShapeReport final_shape(const Body& body, const par::Comm& comm = par::Comm::self());
+// The summary's "shape" entries of a report.
+io::Json shape_entries(const ShapeReport& shape);
 void write_shape(const ShapeReport& shape, const std::filesystem::path& profile_csv, io::Json& summary);
 
 }  // namespace rkpm::sim
