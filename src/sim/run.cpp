@@ -330,7 +330,9 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       if (!options.quiet)
         progress.update(world->step, world->time, relax ? 0.0 : t_end, integrator.dt(), elapsed(),
                         relax ? relax_progress(integrator, settings) : std::string());
-      if (options.after_step && !options.after_step(*world, integrator)) {
+      // Every rank stops at the same step when one caller asks (Ctrl-C reaches the ranks
+      // at different steps), or the ranks' collectives would no longer match.
+      if (options.after_step && comm.min(options.after_step(*world, integrator) ? 1.0 : 0.0) == 0.0) {
         status = "interrupted";
         code = kIncomplete;
         break;

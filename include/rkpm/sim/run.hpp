@@ -48,7 +48,8 @@ struct RunOptions {
   const par::Comm* comm = &par::Comm::world();
   // Called after every step of the main loop (not the nested levels'); returning false
   // stops the run there, as --max-steps does, with the status "interrupted" and exit
-  // code kIncomplete: the final frame and summary.json are written.
+  // code kIncomplete: the final frame and summary.json are written. Distributed, the
+  // ranks stop together at the first step where any rank's call returns false.
   std::function<bool(const World&, const Integrator&)> after_step;
   // When set, receives the world and the integrator at the end of a run that got past
   // its set-up, instead of their being destroyed.
