@@ -40,8 +40,8 @@ Footprint footprint(const sim::Body& b) {
   f.state = bytes(b.d) + bytes(b.v) + bytes(b.force) + bytes(b.F) +
             bytes(b.mass) + bytes(b.inertia) + bytes(b.spacing) + bytes(b.stabilization.weight) +
             material_bytes(b.material) + b.force_scatter.bytes() + b.point_force_scatter.bytes();
-  if (b.director) {
-    const auto& d = *b.director;
+  if (materials::lce::material_of(b)) {
+    const auto& d = materials::lce::material_of(b)->director;
     f.state += bytes(d.h) + bytes(d.h0) + bytes(d.grad_h) + bytes(d.frank_flux) + bytes(d.frank_divergence) +
                bytes(d.rate) + bytes(d.F_start) + bytes(d.normals);
   }
@@ -65,8 +65,8 @@ Traffic internal_force_traffic(const sim::Body& b) {
   t.state_read = bytes(b.d) + (b.gradient.single_precision() ? 0 : bytes(b.cloud.X));
   t.state_written = bytes(b.F) + bytes(b.force);
   t.state_read += material_bytes(b.material);
-  if (b.director) {
-    const auto& d = *b.director;
+  if (materials::lce::material_of(b)) {
+    const auto& d = materials::lce::material_of(b)->director;
     t.state_read += bytes(d.h) + bytes(d.h0);
     if (d.frank) {
       // Grad h (a gather like F), the Frank flux, and its divergence at the particles
@@ -89,7 +89,7 @@ Traffic internal_force_traffic(const sim::World& world) {
 
 double internal_force_pair_updates(const sim::Body& b) {
   double entries = 2.0 * static_cast<double>(b.gradient.col.size());
-  if (b.director && b.director->frank) entries *= 2.0;  // Grad h and the flux divergence: two more passes
+  if (materials::lce::material_of(b) && materials::lce::material_of(b)->director.frank) entries *= 2.0;  // Grad h and the flux divergence: two more passes
   if (b.stabilization.active()) entries += 2.0 * static_cast<double>(b.interpolation.col.size());
   return entries;
 }

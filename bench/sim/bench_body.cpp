@@ -5,6 +5,7 @@
 
 #include "../common/footprint.hpp"
 #include "rkpm/sim/body.hpp"
+#include "rkpm/sim/body_state.hpp"
 #include "rkpm/sim/world.hpp"
 
 namespace rkpm::bench {
@@ -43,7 +44,7 @@ void BM_DirectorUpdate_LCEShell(benchmark::State& state) {
   sim::Body& body = f.body("cell");
   const double dt = f.integrator->dt();
   for (auto _ : state) {
-    benchmark::DoNotOptimize(sim::advance_director(body, dt));
+    benchmark::DoNotOptimize(sim::end_state_step(body, dt));
     benchmark::ClobberMemory();
   }
   // Per particle only: no pairs.

@@ -19,6 +19,15 @@ py::array vectors_view(const std::vector<Vec3>& values, py::handle owner) {
                                        values.empty() ? nullptr : values.front().data(), owner));
 }
 
+py::array field_view(const double* values, std::size_t n, int components, py::handle owner) {
+  const auto rows = static_cast<py::ssize_t>(n);
+  const auto cols = static_cast<py::ssize_t>(components);
+  if (components == 1)
+    return read_only(py::array_t<double>({rows}, {py::ssize_t{sizeof(double)}}, values, owner));
+  return read_only(py::array_t<double>({rows, cols}, {cols * py::ssize_t{sizeof(double)}, py::ssize_t{sizeof(double)}},
+                                       values, owner));
+}
+
 py::array scalars_view(const std::vector<double>& values, py::handle owner) {
   return read_only(py::array_t<double>({static_cast<py::ssize_t>(values.size())}, {py::ssize_t{sizeof(double)}},
                                        values.data(), owner));

@@ -6,6 +6,7 @@
 #include "rkpm/par/comm.hpp"
 #include "rkpm/scene/param_registry.hpp"
 #include "rkpm/scene/scene.hpp"
+#include "rkpm/sim/body_state.hpp"
 
 #include <pybind11/stl.h>
 
@@ -128,8 +129,22 @@ PYBIND11_MODULE(_rkpm, m) {
       .def("deformation_gradient", view([](Simulation&, const rkpm::sim::Body& b, py::capsule keep) {
              return rkpm::python::matrices_view(b.F, keep);
            }), py::arg("body"), "(n, 3, 3) deformation gradient F of the last force evaluation (a read-only view).")
-      .def("director", view([](Simulation&, const rkpm::sim::Body& b, py::capsule keep) -> py::object {
-             if (!b.director) return py::none();
-             return rkpm::python::vectors_view(b.director->h, keep);
-           }), py::arg("body"), "(n, 3) director h of an LCE body (a read-only view), None for other bodies.");
+      .def("material_field",
+           [](Simulation& s, const std::string& body, const std::string& name) -> py::object {
+             const rkpm::sim::Body& b = s.body(body);
+             for (const auto& f : rkpm::sim::material_output_fields(b))
+               if (f.name == name)
+                 return rkpm::python::field_view(f.values, b.size(), f.components, s.world_keeper());
+             return py::none();
+           },
+           py::arg("body"), py::arg("name"),
+           "(n, components) per-particle state a body's material declares under `name` (the LCE's "
+           "\"director\"; a read-only view), None when its material has no such field.")
+      .def("material_field_names",
+           [](Simulation& s, const std::string& body) {
+             std::vector<std::string> names;
+             for (const auto& f : rkpm::sim::material_output_fields(s.body(body))) names.push_back(f.name);
+             return names;
+           },
+           py::arg("body"), "Names of the per-particle state fields the body's material declares.");
 }

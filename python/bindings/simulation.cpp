@@ -197,7 +197,7 @@ py::dict Simulation::energy() {
   d["interface"] = e.interface;
   d["external"] = e.external;
   d["active"] = e.active;
-  d["director"] = e.director;
+  d["state"] = e.state;
   d["dissipated"] = e.dissipated;
   d["initial"] = e.initial;
   d["relative_error"] = e.relative_error();

@@ -52,7 +52,14 @@ def _history(self):
     return {name: numpy.array([float(r[k]) for r in values]) for k, name in enumerate(header)}
 
 
+def _director(self, body):
+    """(n, 3) director h of an LCE body (a read-only view), None for other bodies: the
+    field the LCE material declares under that name (material_field)."""
+    return self.material_field(body, "director")
+
+
 Simulation.from_dict = staticmethod(_from_dict)
+Simulation.director = _director
 Simulation.history = _history
 
 __all__ = ["Simulation", "SceneError", "SetupError", "Unstable", "params", "scene_to_toml"]

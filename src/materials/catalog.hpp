@@ -18,14 +18,15 @@ struct Body;
 
 namespace rkpm::materials {
 
-// Each model's entry points. `build` sets body.material (and whatever else of the body
-// the model owns) from the validated [body.material] table; the cloud, the RK
-// operators, the initial state and the director field (for a model that needs one)
-// exist when it is called. It throws std::invalid_argument naming the parameter.
+// Each model's entry points. `build` sets body.material, its per-point state included,
+// from the validated [body.material] table (and the model's own sub-tables, such as the
+// LCE's [body.director]); the cloud, the RK operators and the initial state exist when
+// it is called. It returns a note for the run log, or nothing, and throws
+// std::invalid_argument naming the parameter.
 #define RKPM_MATERIAL(model)                                       \
   namespace model {                                                \
   scene::ParamTable table();                                       \
-  void build(const scene::BodySpec& spec, sim::Body& body);        \
+  std::string build(const scene::BodySpec& spec, sim::Body& body); \
   }
 #include "materials/catalog.def"
 #undef RKPM_MATERIAL
@@ -37,8 +38,9 @@ std::vector<scene::ParamTable> material_tables();
 // `director`: the model carries a director field, so its bodies take a [body.director] table.
 scene::ParamTable material_table(std::string model, std::string help, bool director = false);
 
-// Gives the body the material its validated [body.material] table declares (rkpm_sim).
-// Throws sim::SetupError naming the file, line and body when the parameters are invalid.
-void make_material(const scene::BodySpec& spec, sim::Body& body);
+// Gives the body the material its validated [body.material] table declares (rkpm_sim),
+// and returns the model's note for the run log (empty: none). Throws sim::SetupError
+// naming the file, line and body when the parameters are invalid.
+std::string make_material(const scene::BodySpec& spec, sim::Body& body);
 
 }  // namespace rkpm::materials

@@ -9,19 +9,18 @@
 #include <fmt/format.h>
 
 #include <stdexcept>
-#include <type_traits>
-#include <variant>
 
 namespace rkpm::materials {
 
-void make_material(const scene::BodySpec& spec, sim::Body& body) {
+std::string make_material(const scene::BodySpec& spec, sim::Body& body) {
   const scene::ParamSet& p = spec.material;
   const std::string& model = spec.model();
   bool built = false;
+  std::string note;
   try {
 #define RKPM_MATERIAL(entry)    \
   if (!built && model == #entry) { \
-    entry::build(spec, body);   \
+    note = entry::build(spec, body); \
     built = true;               \
   }
 #include "materials/catalog.def"
@@ -34,14 +33,7 @@ void make_material(const scene::BodySpec& spec, sim::Body& body) {
   if (!built)
     throw sim::SetupError(fmt::format("{}:{}: [{}] model = \"{}\": not in the material catalog", p.file(),
                                       p.table_line(), p.section(), model));
-  // The scene gives a body a [body.director] table exactly when its model's table says
-  // so; the model's body material must agree, or the force pass would miss the field.
-  const bool needs_director =
-      std::visit([](const auto& m) { return std::decay_t<decltype(m)>::needs_director; }, body.material);
-  if (needs_director != body.director.has_value())
-    throw std::logic_error(fmt::format("material model \"{}\": its table and its body material disagree on "
-                                       "the director field",
-                                       model));
+  return note;
 }
 
 }  // namespace rkpm::materials

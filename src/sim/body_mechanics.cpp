@@ -5,33 +5,31 @@
 
 #include <algorithm>
 #include <functional>
+#include <type_traits>
+#include <utility>
 #include <limits>
 
 namespace rkpm::sim {
 
-namespace {
-// The body's director field, or null for a material without one.
-DirectorField* director_of(Body& body) { return body.director ? &*body.director : nullptr; }
-const DirectorField* director_of(const Body& body) { return body.director ? &*body.director : nullptr; }
-}  // namespace
-
 rk::RKApproximation approximation(const Body& body) { return rk::RKApproximation(body.cloud, body.rk_settings); }
 
 namespace {
-// The ghosts' current displacements and (for the Frank term) directors, from their
-// owners.
-void pull_ghosts(Body& body, DirectorField* dir) {
-  body.ghosts.pull(body.d);
-  if (dir != nullptr) body.ghosts.pull(dir->h);
-}
+// Whether a material has a stress kernel that also returns its coupled field's flux.
+template <class Material, class = void>
+struct has_flux : std::false_type {};
+template <class Material>
+struct has_flux<Material, std::void_t<decltype(std::declval<const Material&>().stress_and_flux(
+                              Index{}, std::declval<const Mat3&>(), std::declval<Mat3&>()))>> : std::true_type {};
 
 // One pass over the rows of the gradient operator (and of the interpolation operator
 // when the body is stabilized), so each row is read from memory once per step:
-//   F_L = sum_I x_I (x) b_I(X_L)                 (and Grad_X h with the Frank term),
-//   P_L = stress(L, F_L, Grad_X h_L, flux_L),
+//   F_L = sum_I x_I (x) b_I(X_L)                 (and Grad_X of the material's coupled
+//                                                 field, materials::CoupledField),
+//   P_L = material.stress(L, F_L)                (or stress_and_flux when the flux's
+//                                                 divergence is tracked),
 //   f_I += V_L P_L b_I(X_L)                      (the internal force, scattered),
-//   div_I += V_L flux_L b_I(X_L)                 (the Frank term's weak divergence,
-//                                                 when tracked: DirectorField),
+//   div_I += V_L flux_L b_I(X_L)                 (the coupled field's weak divergence,
+//                                                 when tracked: CoupledField),
 //   r_L = d_L - sum_I Psi_I(X_L) d_I,  f_L += W_L r_L,  f_I -= Psi_I(X_L) W_L r_L
 //                                                (the stabilization, rk/stabilization.hpp).
 // The scatter goes into per-thread buffers; on several threads or ranks it is ordered
@@ -39,15 +37,16 @@ void pull_ghosts(Body& body, DirectorField* dir) {
 // force has the same bits on any thread and rank count.
 // `grad` is the operator's storage (op.grad or op.grad_float): the precision is
 // dispatched once per pass, so the row loops inline without a branch per row.
-template <class Stored, class Stress>
-void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir, const Stress& stress) {
+template <class Stored, class Material>
+void force_pass(Body& body, const std::vector<Stored>& grad, const Material& material,
+                const materials::CoupledField& field) {
   const auto& op = body.gradient;
   const auto& N = body.interpolation;
   auto& stab = body.stabilization;
   const bool stabilized = stab.active();
-  const bool frank = dir != nullptr && dir->frank;
-  // The Frank flux's divergence: a second scatter channel, made only when tracked.
-  const bool divergence = frank && dir->frank_divergence_tracked;
+  const bool coupled = field.active();
+  // The coupled flux's divergence: a second scatter channel, made only when tracked.
+  const bool divergence = coupled && field.flux != nullptr;
   const int threads = rk::RowScatter::team_threads();
   const int channels = divergence ? 2 : 1;
   auto& scatter = body.force_scatter;
@@ -72,7 +71,10 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
                            body.distributed() ? &links : nullptr);
     }
   }
-  if (body.distributed()) pull_ghosts(body, frank ? dir : nullptr);
+  if (body.distributed()) {
+    body.ghosts.pull(body.d);
+    if (coupled) body.ghosts.pull(*field.values);
+  }
   std::vector<double> energy(static_cast<std::size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
@@ -80,18 +82,23 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
     scatter.clear(t);
     double stabilization_energy = 0.0;
     for (Index L = scatter.row_begin(t); L < scatter.row_end(t); ++L) {
-      Mat3 F, grad_h = Mat3::Zero();
-      if (frank) {
-        rk::deformation_and_director_gradients(op, grad, body.cloud.X, body.d, dir->h, L, F, grad_h);
-        dir->grad_h[L] = grad_h;
+      Mat3 F;
+      if (coupled) {
+        Mat3 field_gradient;
+        rk::deformation_and_field_gradients(op, grad, body.cloud.X, body.d, *field.values, L, F, field_gradient);
+        (*field.gradient)[L] = field_gradient;  // before the stress, which reads it
       } else {
         F = rk::deformation_gradient(op, grad, body.cloud.X, body.d, L);
       }
       body.F[L] = F;
       Mat3 flux = Mat3::Zero();
-      const Mat3 P = stress(L, F, grad_h, divergence ? &flux : nullptr);
+      Mat3 P;
+      if constexpr (has_flux<Material>::value)
+        P = divergence ? material.stress_and_flux(L, F, flux) : material.stress(L, F);
+      else
+        P = material.stress(L, F);
       const double w = op.weight[L];
-      if (divergence) dir->frank_flux[L] = flux;
+      if (divergence) (*field.flux)[L] = flux;
       Vec3 wr = Vec3::Zero();
       if (stabilized) {
         const Vec3 r = rk::interpolation_residual(N, body.d, L);
@@ -113,15 +120,16 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
 #pragma omp barrier
     // The sums hold f_int plus the stabilization's resistance; the body's force is minus that.
     scatter.reduce(t, 0, -1.0, body.force);
-    if (divergence) scatter.reduce(t, 1, 1.0, dir->frank_divergence);
+    if (divergence) scatter.reduce(t, 1, 1.0, *field.divergence);
   }
   // The seams (particles the rows of several threads or ranks reach), in order.
   scatter.fold(0, -1.0, body.force, false);
   if (divergence) {
-    scatter.fold(1, 1.0, dir->frank_divergence, false);
+    std::vector<Vec3>& div = *field.divergence;
+    scatter.fold(1, 1.0, div, false);
     // Weak form: sum_L V_L flux_L b_I(X_L) = -V_I Div_X(flux)(X_I) away from the surface.
 #pragma omp parallel for schedule(static)
-    for (Index I = 0; I < static_cast<Index>(body.size()); ++I) dir->frank_divergence[I] /= -body.cloud.volume[I];
+    for (Index I = 0; I < static_cast<Index>(body.size()); ++I) div[I] /= -body.cloud.volume[I];
   }
   body.stabilization_energy = 0.0;
   for (double e : energy) body.stabilization_energy += e;
@@ -131,17 +139,13 @@ void force_pass(Body& body, const std::vector<Stored>& grad, DirectorField* dir,
 // Each function below dispatches once per body (std::visit over the material catalog)
 // and calls the model's inline kernel per point (sim::Material's interface).
 void compute_internal_forces(Body& body) {
-  DirectorField* dir = director_of(body);
   std::visit(
-      [&](const auto& material) {
-        // flux: null unless the pass tracks the Frank divergence.
-        const auto stress = [&](Index L, const Mat3& F, const Mat3& grad_h, Mat3* flux) {
-          return material.first_piola(L, F, grad_h, flux, dir);
-        };
+      [&](auto& material) {
+        const materials::CoupledField field = material.coupled_field();
         if (body.gradient.single_precision())
-          force_pass(body, body.gradient.grad_float, dir, stress);
+          force_pass(body, body.gradient.grad_float, material, field);
         else
-          force_pass(body, body.gradient.grad, dir, stress);
+          force_pass(body, body.gradient.grad, material, field);
       },
       body.material);
 }
@@ -155,20 +159,16 @@ void update_deformation_gradients(Body& body) {
 }
 
 Mat3 first_piola_at(const Body& body, Index L) {
-  const DirectorField* dir = director_of(body);
-  const Mat3 grad_h = dir != nullptr && dir->frank ? dir->grad_h[L] : Mat3::Zero();
-  return std::visit([&](const auto& material) { return material.first_piola(L, body.F[L], grad_h, nullptr, dir); },
-                    body.material);
+  return std::visit([&](const auto& material) { return material.stress(L, body.F[L]); }, body.material);
 }
 
 double strain_energy(const Body& body) {
-  const DirectorField* dir = director_of(body);
   ExactSum total;
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(+ : total)
         for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
-          total.add(body.gradient.weight[L] * material.energy(L, body.F[L], dir));
+          total.add(body.gradient.weight[L] * material.energy(L, body.F[L]));
       },
       body.material);
   return total.value() + body.stabilization_energy;
@@ -203,6 +203,17 @@ double shear_modulus(const Body& body, Index L) {
   return std::visit([L](const auto& material) { return material.shear_modulus(L); }, body.material);
 }
 
+Vec3 reference_centroid(const Body& body) {
+  const auto& c = body.cloud;
+  Vec3 sum = Vec3::Zero();
+  double v = 0.0;
+  for (Index i : one_rank_order(body)) {
+    sum += c.volume[i] * c.X[i];
+    v += c.volume[i];
+  }
+  return sum / v;
+}
+
 std::vector<Index> one_rank_order(const Body& body) {
   std::vector<Index> order(body.size());
   for (std::size_t i = 0; i < order.size(); ++i)
@@ -221,24 +232,22 @@ double mean_shear_modulus(const Body& body) {
 
 void particle_wave_steps(const Body& body, std::vector<double>& steps) {
   const auto n = static_cast<Index>(body.F.size());
-  const DirectorField* dir = director_of(body);
   steps.resize(static_cast<std::size_t>(n));
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static)
-        for (Index L = 0; L < n; ++L) steps[L] = body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density);
+        for (Index L = 0; L < n; ++L) steps[L] = body.spacing[L] / material.wave_speed(L, body.F[L], body.density);
       },
       body.material);
 }
 
 double material_stable_dt(const Body& body) {
-  const DirectorField* dir = director_of(body);
   double dt = std::numeric_limits<double>::infinity();
   std::visit(
       [&](const auto& material) {
 #pragma omp parallel for schedule(static) reduction(min : dt)
         for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
-          dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], dir, body.density) *
+          dt = std::min(dt, body.spacing[L] / material.wave_speed(L, body.F[L], body.density) *
                                 std::sqrt(body.inertia[L] / body.mass[L]));
       },
       body.material);

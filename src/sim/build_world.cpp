@@ -6,8 +6,8 @@
 #include "rkpm/particles/generators.hpp"
 #include "rkpm/par/partition.hpp"
 #include "rkpm/particles/renumber.hpp"
-#include "rkpm/rk/neighbor_search.hpp"
 #include "rkpm/sim/body_points.hpp"
+#include "rkpm/sim/body_state.hpp"
 #include "terms/catalog.hpp"
 
 #include <fmt/format.h>
@@ -20,104 +20,6 @@ namespace rkpm::sim {
 namespace {
 
 std::string where(const scene::ParamSet& p) { return fmt::format("{}:{}: [{}]", p.file(), p.table_line(), p.section()); }
-
-// The volume-weighted centre, summed in the one-rank numbering: the same bits for any
-// rank count (the director's orientation test and the initial stretch read it, and a
-// round-off difference flips the director of a particle at the centre).
-Vec3 centroid(const Body& body) {
-  const auto& c = body.cloud;
-  Vec3 sum = Vec3::Zero();
-  double v = 0.0;
-  for (Index i : one_rank_order(body)) {
-    sum += c.volume[i] * c.X[i];
-    v += c.volume[i];
-  }
-  return sum / v;
-}
-
-// Initial director (Eq. 8 and the text around it): the outward normal of the nearest
-// surface particle, oriented away from the body's centre so that a shell's wall carries
-// the outer normal through its thickness; or radial; or a fixed vector.
-// A particle whose nearest surface particles tie (a mirror-symmetric cloud's centre)
-// gets the normal of the lowest id among them, an arbitrary choice when their normals
-// disagree: `warning` then names the first such particle.
-DirectorField make_director(const scene::BodySpec& spec, const Body& body, std::string& warning) {
-  const auto& p = *spec.director;
-  const auto& cloud = body.cloud;
-  DirectorField dir;
-  const std::size_t n = cloud.size();
-  dir.h.resize(n);
-  const Vec3 centre = centroid(body);
-  const std::string initial = p.choice("initial");
-  if (initial == "fixed") {
-    const Vec3 h = p.vec3("vector").stableNormalized();  // finite for any non-zero components
-    std::fill(dir.h.begin(), dir.h.end(), h);
-  } else if (initial == "radial") {
-    // A particle at the centre gets e_z. "At the centre" allows for the centroid's
-    // round-off, which depends on the particle order: a plain r != 0 would give the
-    // centre particle a round-off direction that changes with the numbering (Morton
-    // order, the partition of a distributed run).
-    double extent = 0.0;
-    for (std::size_t i = 0; i < n; ++i) extent = std::max(extent, (cloud.X[i] - centre).norm());
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 r = cloud.X[i] - centre;
-      dir.h[i] = r.norm() > 1e-9 * extent ? Vec3(r.normalized()) : Vec3::UnitZ();
-    }
-  } else {
-    std::vector<Vec3> surface;
-    for (Index b : cloud.boundary_particles) surface.push_back(cloud.X[b]);
-    const rk::NeighborSearch search(surface);
-    const auto oriented = [&](const Vec3& normal, std::size_t i) {
-      return normal.dot(cloud.X[i] - centre) >= 0.0 ? normal : Vec3(-normal);
-    };
-    std::vector<char> ambiguous(n, 0);
-#pragma omp parallel
-    {
-      std::vector<std::pair<Index, double>> found;
-#pragma omp for schedule(static)
-      for (std::int64_t k = 0; k < static_cast<std::int64_t>(n); ++k) {
-        const auto i = static_cast<std::size_t>(k);
-        const auto bi = cloud.boundary_index[i];
-        if (bi >= 0) {
-          dir.h[i] = oriented(cloud.boundary_normal[bi], i);
-          continue;
-        }
-        // Inside: the normal of the nearest surface particle; among equals (`found` then
-        // holds all of them) the lowest id in the one-rank numbering, so that the choice
-        // does not depend on how a distributed run renumbered the particles.
-        const auto nearest = search.nearest(cloud.X[i], found);
-        Index pick = nearest.first;
-        const auto one_rank_id = [&](Index b) {
-          const auto j = static_cast<std::size_t>(cloud.boundary_particles[static_cast<std::size_t>(b)]);
-          return body.original_id.empty() ? static_cast<std::int64_t>(j) : body.original_id[j];
-        };
-        for (const auto& f : found)
-          if (f.second == nearest.second && one_rank_id(f.first) < one_rank_id(pick)) pick = f.first;
-        dir.h[i] = oriented(cloud.boundary_normal[pick], i);
-        for (const auto& f : found)
-          if (oriented(cloud.boundary_normal[f.first], i).dot(dir.h[i]) < 0.5) ambiguous[i] = 1;  // > 60 deg apart
-      }
-    }
-    const auto first = std::find(ambiguous.begin(), ambiguous.end(), 1);
-    if (first != ambiguous.end()) {
-      const auto i = static_cast<std::size_t>(first - ambiguous.begin());
-      warning = fmt::format(
-          "{}: body '{}': [body.director] initial = \"surface_normal\": {} particle(s) lie equally near surface "
-          "particles whose normals differ by more than 60 deg (first: particle {} at ({:.4g}, {:.4g}, {:.4g}) m, "
-          "e.g. the centre of a mirror-symmetric cloud); their director is the normal of the lowest id, an "
-          "arbitrary tilt. An odd cell count puts no particle there.",
-          spec.body.file(), body.name, std::count(ambiguous.begin(), ambiguous.end(), 1), i, cloud.X[i].x(),
-          cloud.X[i].y(), cloud.X[i].z());
-    }
-  }
-  dir.h0 = dir.h;
-  dir.evolve = p.flag("evolve");
-  dir.anchored = p.choice("boundary") == "normal";
-  dir.rate.assign(n, Vec3::Zero());
-  dir.F_start.assign(n, Mat3::Identity());
-  // The material decides whether the Frank term's arrays are needed (materials/lce).
-  return dir;
-}
 
 // Small-strain shear modulus at each point: the stiffness scale of the stabilization.
 std::vector<double> shear_moduli(const Body& body) {
@@ -218,7 +120,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 
   // Initial state: homogeneous stretch about the centroid, velocity plus random noise.
   const Vec3 stretch = spec.initial.vec3("stretch");
-  const Vec3 centre = centroid(*body);
+  const Vec3 centre = reference_centroid(*body);
   const Vec3 velocity = spec.initial.vec3("velocity");
   const double noise = spec.initial.real("random_velocity");
   SplitMix64 random(seed * 0x100000001b3ULL + static_cast<std::uint64_t>(id));
@@ -235,9 +137,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   body->force.assign(n, Vec3::Zero());
   body->F.assign(n, Mat3::Identity());
 
-  // The director field first: a model that carries one (the LCE) builds on it.
-  if (spec.director) body->director = make_director(spec, *body, warning);
-  materials::make_material(spec, *body);
+  warning = materials::make_material(spec, *body);
   body->stabilization =
       rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
   try {
@@ -248,7 +148,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   // The rows this rank owns reference the ghosts: through the smoothed gradients and,
   // for the stabilization and the physical displacement, the interpolation.
   if (comm.parallel()) {
-    // The current normals at an owned surface particle (the director's anchoring) read
+    // The current normals at an owned surface particle (a material state anchored to the surface) read
     // the nodes of every surface face it belongs to.
     std::vector<Index> face_nodes;
     for (const auto& face : cloud.boundary_faces) {
@@ -316,7 +216,7 @@ IntegratorSettings integrator_settings(const scene::Scene& scene) {
   s.damping = p.real("damping");
   s.relax_force_tol = p.real("relax_force_tol");
   s.relax_velocity_tol = p.real("relax_velocity_tol");
-  s.relax_director_tol = p.real("relax_director_tol");
+  s.relax_state_tol = p.real("relax_state_tol");
   s.mass_scaling = p.flag("mass_scaling");
   s.contact_mass_scaling = p.flag("contact_mass_scaling");
   s.fire = FireParameters::named(p.choice("relax_method"));
@@ -347,9 +247,10 @@ void check_newton_krylov_finish(const scene::Scene& scene, const World& world) {
   std::string why;
   if (world.comm->parallel()) why = fmt::format("it runs on one process (this run has {} ranks)", world.comm->size());
   for (const auto& b : world.bodies)
-    if (why.empty() && director_relaxes(*b))
-      why = fmt::format("body '{}' has a director that relaxes by itself (LCE mobility > 0); the finish solves for "
-                        "the coordinates with the director carried, so it needs mobility = 0",
+    if (why.empty() && state_evolves_in_time(*b))
+      why = fmt::format("body '{}' has a material state that relaxes in time by itself (an LCE with mobility > 0, "
+                        "a viscous material); the finish solves for the coordinates with the state carried, so it "
+                        "needs a state that follows the motion alone (an LCE with mobility = 0)",
                         b->name);
   if (!why.empty())
     throw SetupError(fmt::format("{}:{}: [integrator] relax_finish = \"newton_krylov\": {}", p.file(),

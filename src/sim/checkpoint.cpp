@@ -1,5 +1,7 @@
 #include "rkpm/sim/checkpoint.hpp"
 
+#include "rkpm/sim/body_state.hpp"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -202,11 +204,11 @@ StateRecord checkpoint_record(const World& world, const Integrator& integrator, 
     r.put_vectors(p + "d", b->d);
     r.put_vectors(p + "v", b->v);
     // The forces of the step's evaluation, which the next half-kick reads as f / inertia:
-    // an LCE body's director has moved since, so forces recomputed at the restored state
-    // would differ in the last bits.
+    // a material's state has moved since (end_state_step), so forces recomputed at the
+    // restored state would differ in the last bits.
     r.put_vectors(p + "force", b->force);
     r.put_reals(p + "inertia", b->inertia);
-    if (b->director) r.put_vectors(p + "director", b->director->h);
+    save_material_state(*b, r, p);
     r.put_reals(p + "constraint_targets", b->constraints.targets());
   }
   r.put_text("terms", term_names(world));
@@ -263,9 +265,6 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
       const auto n = r.integer(body_prefix(*b) + "particles");
       if (n != static_cast<std::int64_t>(b->size()))
         fail(fmt::format("body '{}' has {} particles in the checkpoint, {} in the scene", b->name, n, b->size()));
-      if (r.has(body_prefix(*b) + "director") != b->director.has_value())
-        fail(fmt::format("body '{}' {} a director in the checkpoint but {} in the scene", b->name,
-                         b->director ? "has no" : "has", b->director ? "has one" : "not"));
     }
     if (r.text("terms") != term_names(world))
       fail(fmt::format("the terms differ: the checkpoint has {}, the scene has {}", listed(r.text("terms")),
@@ -295,14 +294,7 @@ void read_checkpoint(const std::filesystem::path& path, World& world, Integrator
         if (!(b->inertia[i] > 0.0))
           fail(fmt::format("body '{}' particle {} has inertia {}, expected a positive mass", b->name, i,
                            b->inertia[i]));
-      if (b->director) {
-        b->director->h = r.vectors(p + "director", b->size());
-        // The step keeps |h| = 1 (Eq. 7 renormalised): another length is a damaged file.
-        for (std::size_t i = 0; i < b->size(); ++i)
-          if (!(std::abs(b->director->h[i].norm() - 1.0) <= 1e-9))
-            fail(fmt::format("body '{}' particle {} has a director of length {}, expected a unit vector", b->name,
-                             i, b->director->h[i].norm()));
-      }
+      load_material_state(*b, r, p);  // the material checks its own state (StateError)
       b->constraints.set_targets(r.reals(p + "constraint_targets", b->constraints.targets().size()));
     }
     for (std::size_t k = 0; k < world.terms.size(); ++k) world.terms[k]->load_state(r.record(term_prefix(k)));

@@ -67,7 +67,7 @@ History::History(const std::filesystem::path& path, const World& world, const Bo
     : writes_(world.comm->root()), path_(path), shape_body_(shape_body) {
   if (!writes_) return;
   columns_ = {"step", "time", "dt", "kinetic", "strain", "interface", "external_work", "active_work",
-              "director_work", "dissipated", "energy_error", "residual", "min_J"};
+              "state_work", "dissipated", "energy_error", "residual", "min_J"};
   for (const auto& t : world.terms)
     for (const auto& column : t->history_columns()) columns_.push_back(column);
   if (shape_body_)
@@ -101,7 +101,7 @@ void History::record(const World& world, Integrator& integrator) {
   const std::string row =
       fmt::format("{},{:.10g},{:.6g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{:.8g}",
                   world.step, world.time, integrator.dt(), e.kinetic, e.strain, e.interface, e.external, e.active,
-                  e.director, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J()) +
+                  e.state, e.dissipated, e.relative_error(), integrator.residual(), integrator.min_J()) +
       term_values + shape_values;
   refuse_non_finite(row);
   out_ << row << "\n";

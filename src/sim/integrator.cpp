@@ -1,5 +1,6 @@
 #include "rkpm/sim/integrator.hpp"
 
+#include "rkpm/sim/body_state.hpp"
 #include "rkpm/sim/stable_step.hpp"
 
 #include <fmt/format.h>
@@ -23,9 +24,9 @@ double body_volume(const World& world, const Body& body) {
 }  // namespace
 
 double EnergyLedger::relative_error() const {
-  const double balance = total() - (initial + external + active + director - dissipated);
+  const double balance = total() - (initial + external + active + state - dissipated);
   const double scale = std::max({std::abs(initial), std::abs(kinetic), std::abs(strain), std::abs(interface),
-                                 std::abs(external), std::abs(active), std::abs(director), std::abs(dissipated),
+                                 std::abs(external), std::abs(active), std::abs(state), std::abs(dissipated),
                                  std::numeric_limits<double>::min()});
   return std::abs(balance) / scale;
 }
@@ -41,17 +42,17 @@ double Integrator::bodies_wave_dt() const {
 }
 
 // The bodies' wave-speed step times the calibration (1 unless the step is measured),
-// each term's own limit, and the directors' (director_stable_dt): the calibration is
+// each term's own limit, and the material states' (state_stable_dt): the calibration is
 // measured on the bodies' material stiffness together with whatever the terms add at
 // that state, but a term that stiffens later (a contact that closes) keeps the limit
-// it states, and the director's first-order relaxation is not a vibration the
-// calibration sees.
+// it states, and a state's first-order relaxation (an LCE director's, Eq. 5) is not a
+// vibration the calibration sees.
 double Integrator::estimate_stable_dt() const {
   double dt = calibration_ * bodies_wave_dt();
   for (const auto& t : world_.terms) dt = std::min(dt, t->stable_dt(world_));
-  double director_dt = std::numeric_limits<double>::infinity();
-  for (const auto& b : world_.bodies) director_dt = std::min(director_dt, director_stable_dt(*b));
-  return std::min(dt, world_.comm->min(director_dt));
+  double state_dt = std::numeric_limits<double>::infinity();
+  for (const auto& b : world_.bodies) state_dt = std::min(state_dt, state_stable_dt(*b));
+  return std::min(dt, world_.comm->min(state_dt));
 }
 
 // The measured stable step 2 / omega_max (stable_step.hpp) over the wave-speed step at
@@ -120,11 +121,7 @@ void Integrator::initialize() {
 
   for (auto& bp : world_.bodies) {
     bp->inertia = bp->mass;
-    // The Frank divergence costs a scatter per row: made only for a reader in the step
-    // (a distributed body keeps it, for director_residual's sake).
-    if (bp->director)
-      bp->director->frank_divergence_tracked =
-          director_relaxes(*bp) || settings_.relax_director_tol > 0.0 || bp->distributed();
+    prepare_material_state(*bp, {settings_.relax_state_tol > 0.0, bp->distributed()});
   }
   evaluate_forces();
   unscaled_stable_dt_ = estimate_stable_dt();
@@ -203,9 +200,9 @@ void Integrator::scale_masses() {
 
 // One step of velocity Verlet (the central-difference scheme with lumped masses) with
 // mass-proportional damping taken implicitly in the second half-kick, followed in the
-// relaxation mode by FIRE, then the director update (Eq. 5-8) at fixed positions; the
-// ledger books the step's energies, the state is checked, and now and then the
-// stable step is re-estimated.
+// relaxation mode by FIRE, then the update of the materials' state at fixed positions
+// (the hooks of materials/state_hooks.hpp, in their order); the ledger books the step's
+// energies, the state is checked, and now and then the stable step is re-estimated.
 void Integrator::step() {
   StepBook& book = book_;
   book.h = dt();
@@ -213,17 +210,16 @@ void Integrator::step() {
   book.old_term_power = term_power_;
   book.damping_power = 0.0;
   book.fire_dissipated = 0.0;
-  book.director_energy.clear();
+  book.state_energy.clear();
   book.active_work = 0.0;
 
-  for (auto& bp : world_.bodies)
-    if (bp->director) hold_step_start(*bp);
+  for (auto& bp : world_.bodies) begin_state_step(*bp);
   first_kick_and_drift(book);
   evaluate_forces();
   second_kick(book.h);
   book.kinetic_of_motion = kinetic_energy(world_);
   if (settings_.mode == Mode::Relax) fire(book);
-  director(book);
+  advance_states(book);
   ledger(book);
   world_.time += book.h;
   ++world_.step;
@@ -283,10 +279,11 @@ void Integrator::fire(StepBook& book) {
 // evaluated at the new state. The ledger books the jump: the loads do the work W along
 // it (the trapezoidal rule of their power with the jump as the velocity over a unit
 // time), and what the stored energy does not gain of it is dissipated:
-// external += W, dissipated += W + A - (stored after - stored before). A is the active
-// stress's work along the jump (Eq. 1; it stores nothing): the director update books it
-// with the step's motion (F - F_start includes the jump), so the jump's share is
-// dissipated here, or the balance would be off by A at every step back.
+// external += W, dissipated += W + A - (stored after - stored before). A is a material's
+// non-conservative work along the jump (the LCE's active stress, Eq. 1; it stores
+// nothing): the state update books it with the step's motion (F - F_start includes the
+// jump), so the jump's share is dissipated here, or the balance would be off by A at
+// every step back.
 void Integrator::step_back(StepBook& book) {
   const double stored_before = stored_energy();
   jump_.resize(world_.bodies.size());
@@ -294,7 +291,7 @@ void Integrator::step_back(StepBook& book) {
   for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
     Body& b = *world_.bodies[k];
     jump_[k] = b.d;  // the coordinates before the jump
-    if (b.director) jump_F_[k] = b.F;
+    if (has_material_state(b)) jump_F_[k] = b.F;
 #pragma omp parallel for schedule(static)
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * dt_ * b.v[i];
   }
@@ -312,7 +309,8 @@ void Integrator::step_back(StepBook& book) {
   const double work = 0.5 * (power_before + power_after);
   double active = 0.0;
   for (std::size_t k = 0; k < world_.bodies.size(); ++k)
-    if (world_.bodies[k]->director) active += world_.comm->sum(active_work_since(*world_.bodies[k], jump_F_[k]));
+    if (has_material_state(*world_.bodies[k]))
+      active += world_.comm->sum(state_work_since(*world_.bodies[k], jump_F_[k]).active_work);
   ledger_.external += work;
   book.fire_dissipated += work + active - (stored_energy() - stored_before);
   ++step_backs_;
@@ -322,14 +320,14 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
                                                     const std::function<void(const NewtonKrylovReport&)>& stepped) {
   if (world_.comm->parallel()) throw std::invalid_argument("the Newton-Krylov finish runs on one process");
   for (const auto& b : world_.bodies)
-    if (director_relaxes(*b))
-      throw std::invalid_argument("the Newton-Krylov finish needs directors that do not relax by themselves "
-                                  "(mobility = 0); body '" + b->name + "' has one that does");
+    if (state_evolves_in_time(*b))
+      throw std::invalid_argument("the Newton-Krylov finish needs material states that do not relax in time by "
+                                  "themselves (an LCE's mobility = 0); body '" + b->name + "' has one that does");
   // The solve starts from rest: what FIRE's velocities still hold is dissipated.
   ledger_.dissipated += kinetic_energy(world_);
   double stored_before = 0.0;
-  std::vector<std::vector<Vec3>> base_director(world_.bodies.size());
-  double active = 0.0, director_change = 0.0;  // of the last follow
+  std::vector<StateRecord> base_state(world_.bodies.size());
+  double active = 0.0, state_change = 0.0;  // of the last follow
   NewtonKrylovHooks hooks;
   hooks.residual = [&] {
     update_convergence(0.0);
@@ -338,24 +336,26 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
   hooks.hold = [&] {
     stored_before = stored_energy();
     for (std::size_t k = 0; k < world_.bodies.size(); ++k)
-      if (Body& b = *world_.bodies[k]; b.director) {
-        update_deformation_gradients(b);  // F_start from the same sums as every F `follow` makes
-        hold_step_start(b);
-        base_director[k] = b.director->h;
+      if (Body& b = *world_.bodies[k]; has_material_state(b)) {
+        update_deformation_gradients(b);  // the step's start from the same sums as every F `follow` makes
+        begin_state_step(b);
+        base_state[k] = StateRecord{};
+        save_material_state(b, base_state[k], "");
       }
   };
   hooks.follow = [&] {
-    // The director from the base state to the evaluated coordinates, as a step's motion
-    // carries it; the unit pseudo-time cancels in Eq. 7's co-rotation (rate
-    // (F - F_start) / dt times dt).
-    active = director_change = 0.0;
+    // The state from the base state to the evaluated coordinates, as a step's motion
+    // carries it; a state that does not relax in time by itself (checked above) depends
+    // on the motion alone, so the unit pseudo-time cancels (the LCE's Eq. 7 co-rotation:
+    // rate (F - F_start) / dt times dt).
+    active = state_change = 0.0;
     for (std::size_t k = 0; k < world_.bodies.size(); ++k)
-      if (Body& b = *world_.bodies[k]; b.director) {
+      if (Body& b = *world_.bodies[k]; has_material_state(b)) {
         update_deformation_gradients(b);
-        b.director->h = base_director[k];
-        const DirectorStep d = advance_director(b, 1.0);
+        load_material_state(b, base_state[k], "");
+        const materials::StateUpdate d = end_state_step(b, 1.0);
         active += world_.comm->sum(d.active_work);
-        director_change += world_.comm->sum(d.energy_change);
+        state_change += world_.comm->sum(d.energy_change);
       }
   };
   hooks.carry = [&](const std::vector<std::vector<Vec3>>& from) {
@@ -369,8 +369,8 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
     stop_bodies(world_);
     ledger_.external += work;
     ledger_.active += active;
-    ledger_.director += director_change;
-    ledger_.dissipated += work + active + director_change - (stored_energy() - stored_before);
+    ledger_.state += state_change;
+    ledger_.dissipated += work + active + state_change - (stored_energy() - stored_before);
     check_state();
   };
   hooks.stepped = stepped;
@@ -381,25 +381,26 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
   return report;
 }
 
-// The director of each LCE body moves at fixed positions (Eq. 5-8): the active work
-// of the step's motion and the stored energy the update changes, booked apart.
-void Integrator::director(StepBook& book) {
+// Each body's material state moves at fixed positions (the LCE's director, Eq. 5-8):
+// the non-conservative work of the step's motion and the stored energy the update
+// changes, booked apart.
+void Integrator::advance_states(StepBook& book) {
   for (auto& bp : world_.bodies)
-    if (bp->director) {
-      const DirectorStep d = advance_director(*bp, book.h);
+    if (has_material_state(*bp)) {
+      const materials::StateUpdate d = end_state_step(*bp, book.h);
       book.active_work += world_.comm->sum(d.active_work);
-      book.director_energy.push_back(world_.comm->sum(d.energy_change));
+      book.state_energy.push_back(world_.comm->sum(d.energy_change));
     }
 }
 
 // The energy ledger: the work of the terms and of the moving supports by the trapezoidal
-// rule over the step, the active work (trapezoidal in F, advance_director), the
-// director's energy change, and the dissipation by FIRE and by damping.
+// rule over the step, the materials' active work (trapezoidal in F, end_state_step),
+// their states' energy change, and the dissipation by FIRE and by damping.
 void Integrator::ledger(const StepBook& book) {
   const double h = book.h;
   term_power_ = power_of_terms();
   if (settings_.mode == Mode::Relax) ledger_.dissipated += book.fire_dissipated;
-  for (double e : book.director_energy) ledger_.director += e;
+  for (double e : book.state_energy) ledger_.state += e;
   ledger_.external += 0.5 * h * (book.old_term_power + term_power_) + h * support_power_;
   ledger_.active += book.active_work;
   ledger_.dissipated += h * book.damping_power;
@@ -483,20 +484,20 @@ void Integrator::update_convergence(double kinetic_of_motion) {
   }
   residual_ = world_.comm->max(residual);
   kinetic_measure_ = kinetic_of_motion / reference_energy_;
-  // A pass over the particles every step, only when the scene asks for the director in
-  // the stop.
-  if (settings_.relax_director_tol > 0.0) director_measure_ = director_residual();
+  // A pass over the particles every step, only when the scene asks for the materials'
+  // state in the stop.
+  if (settings_.relax_state_tol > 0.0) state_measure_ = state_residual();
 }
 
-double Integrator::director_residual() const {
+double Integrator::state_residual() const {
   double largest = 0.0;
-  for (const auto& b : world_.bodies) largest = std::max(largest, sim::director_residual(*b));
+  for (const auto& b : world_.bodies) largest = std::max(largest, sim::state_residual(*b));
   return world_.comm->max(largest);
 }
 
 bool Integrator::converged() const {
   if (!(residual_ < settings_.relax_force_tol && kinetic_measure_ < settings_.relax_velocity_tol)) return false;
-  return !(settings_.relax_director_tol > 0.0) || director_measure_ < settings_.relax_director_tol;
+  return !(settings_.relax_state_tol > 0.0) || state_measure_ < settings_.relax_state_tol;
 }
 
 // Every rank checks its own particles; the lowest rank that finds a failure states the
@@ -556,7 +557,7 @@ StateRecord Integrator::save_state() const {
   s.put_real("ledger.active", ledger_.active);
   s.put_real("ledger.dissipated", ledger_.dissipated);
   s.put_real("ledger.initial", ledger_.initial);
-  s.put_real("ledger.director", ledger_.director);
+  s.put_real("ledger.state", ledger_.state);
   s.put_real("term_power", term_power_);
   s.put_real("support_power", support_power_);
   s.put_real("fire.alpha", fire_.alpha());
@@ -580,7 +581,9 @@ void Integrator::load_state(const StateRecord& s) {
   ledger_.active = s.real("ledger.active");
   ledger_.dissipated = s.real("ledger.dissipated");
   ledger_.initial = s.real("ledger.initial");
-  ledger_.director = s.real("ledger.director");
+  // Checkpoints written before the materials' state had hooks of its own name the entry
+  // after the LCE's director.
+  ledger_.state = s.has("ledger.state") ? s.real("ledger.state") : s.real("ledger.director");
   term_power_ = s.real("term_power");
   support_power_ = s.real("support_power");
   fire_ = Fire(settings_.fire, s.real("fire.alpha"), s.integer("fire.positive_steps"));

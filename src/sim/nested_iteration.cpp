@@ -1,5 +1,7 @@
 #include "rkpm/sim/nested_iteration.hpp"
 
+#include "rkpm/sim/body_state.hpp"
+
 #include "rkpm/scene/resolution.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/integrator.hpp"
@@ -79,10 +81,7 @@ Transfer match_physical_displacement(const par::Comm& comm, Body& body, const st
 // rank gathers the whole coarse state (a coarse level is small) and sets its own fine
 // particles; the ghosts' values follow at the next force evaluation.
 Transfer carry_body(const par::Comm& comm, const Body& from, Body& to) {
-  const bool director = from.director.has_value() && to.director.has_value();
   const std::vector<Vec3> from_d = par::gather_owned(comm, from.d, from.owned_begin(), from.owned_end());
-  const std::vector<Vec3> from_h =
-      director ? par::gather_owned(comm, from.director->h, from.owned_begin(), from.owned_end()) : std::vector<Vec3>{};
   const rk::RKApproximation from_rk = approximation(from);
   std::vector<Vec3> target(to.size(), Vec3::Zero());
   std::atomic<bool> failed{false};
@@ -95,16 +94,10 @@ Transfer carry_body(const par::Comm& comm, const Body& from, Body& to) {
         failed = true;
         continue;
       }
-      Vec3 u = Vec3::Zero(), h = Vec3::Zero();
-      for (std::size_t k = 0; k < sv.ids.size(); ++k) {
-        u += sv.psi[k] * from_d[sv.ids[k]];
-        if (director) h += sv.psi[k] * from_h[sv.ids[k]];
-      }
+      Vec3 u = Vec3::Zero();
+      for (std::size_t k = 0; k < sv.ids.size(); ++k) u += sv.psi[k] * from_d[sv.ids[k]];
       target[J] = u;
       to.v[J] = Vec3::Zero();
-      // A director that interpolates to (nearly) nothing, where neighbours point opposite
-      // ways, keeps the fine cloud's own initial value.
-      if (director && h.norm() > 1e-3) to.director->h[J] = h.normalized();
     }
   }
   std::fill(to.v.begin(), to.v.end(), Vec3::Zero());
@@ -119,6 +112,28 @@ Transfer carry_body(const par::Comm& comm, const Body& from, Body& to) {
                                      "cloud of {} particles: {}",
                                      from.name, from.size(), to.size(), e.what()));
       }
+  }
+  // The material's state (an LCE director), interpolated the same way; the material
+  // decides what it keeps of it. The shape functions are evaluated again: holding them
+  // for every fine particle would cost more memory than the finest cloud itself.
+  if (has_material_state(to)) {
+    const materials::VectorInterpolation interpolate = [&](const std::vector<Vec3>& field) {
+      const std::vector<Vec3> all = par::gather_owned(comm, field, from.owned_begin(), from.owned_end());
+      std::vector<Vec3> values(to.size(), Vec3::Zero());
+#pragma omp parallel
+      {
+        rk::ShapeValues sv;
+#pragma omp for schedule(dynamic, 256)
+        for (Index J = to.owned_begin(); J < to.owned_end(); ++J) {
+          if (!from_rk.evaluate(to.cloud.X[J], sv, false)) continue;
+          Vec3 value = Vec3::Zero();
+          for (std::size_t k = 0; k < sv.ids.size(); ++k) value += sv.psi[k] * all[sv.ids[k]];
+          values[J] = value;
+        }
+      }
+      return values;
+    };
+    transfer_material_state(from, to, interpolate);
   }
   return match_physical_displacement(comm, to, target);
 }

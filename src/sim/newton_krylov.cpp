@@ -57,7 +57,7 @@ class Coordinates {
     }
   }
   // Sets the coordinates, with the constrained ones following the free (the velocities
-  // stay zero), and evaluates the forces there, with the director carried to them by
+  // stay zero), and evaluates the forces there, with the materials' state carried to them by
   // `follow` when given: the scaled residual.
   void evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& r, const std::function<void()>& follow = {}) {
     for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
@@ -124,8 +124,8 @@ NewtonKrylovReport solve_static_equilibrium(World& world, const std::vector<doub
   NewtonKrylovReport report;
   Eigen::VectorXd x, r, trial_x, trial_r, step, perturbed_r;
   coords.read(x);
-  // The forces left by a step are those before its director update: evaluated again at
-  // the present director, so that every difference below starts from the same state.
+  // The forces left by a step are those before its state update: evaluated again at
+  // the present state, so that every difference below starts from the same state.
   coords.evaluate(x, r);
   report.residual = hooks.residual();
   const Eigen::VectorXd preconditioner = coords.preconditioner();
@@ -176,7 +176,7 @@ NewtonKrylovReport solve_static_equilibrium(World& world, const std::vector<doub
       }
     }
     if (!accepted) {
-      coords.evaluate(x, r, hooks.follow);  // back to the last accepted state, its director and forces
+      coords.evaluate(x, r, hooks.follow);  // back to the last accepted state, its material state and forces
       report.stop = fmt::format(
           "the line search found no decrease of the residual after Newton step {} (GMRES's "
           "estimate: {:.2g} of its right-hand side after {} iterations)",

@@ -1,5 +1,7 @@
 #include "rkpm/sim/output.hpp"
 
+#include "rkpm/sim/body_state.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,9 +13,32 @@ namespace {
 
 // What a frame holds per point, in the order of the frame's fields: position (3),
 // displacement (3), velocity (3), body_id, particle_id, volume, J, cauchy_stress (9),
-// von_mises, director (3).
-constexpr int kRecord = 26;
-constexpr int kFieldComponents[] = {3, 3, 1, 1, 1, 1, 9, 1, 3};  // the fields after the position
+// von_mises; then the fields the bodies' materials declare (MaterialSlots).
+constexpr int kBaseRecord = 23;
+
+// The material fields of a frame: the union over its bodies of the fields their
+// materials declare (material_output_fields), in body order, each at its offset in the
+// point record. A body whose material lacks one of them writes zeros there.
+struct MaterialSlot {
+  std::string name;
+  int components = 0;
+  int offset = 0;  // in the point record
+};
+std::vector<MaterialSlot> material_slots(const World& world) {
+  std::vector<MaterialSlot> slots;
+  int offset = kBaseRecord;
+  for (const auto& b : world.bodies)
+    for (const auto& f : material_output_fields(*b)) {
+      const auto same = [&](const MaterialSlot& s) { return s.name == f.name; };
+      if (std::find_if(slots.begin(), slots.end(), same) != slots.end()) continue;
+      slots.push_back({f.name, f.components, offset});
+      offset += f.components;
+    }
+  return slots;
+}
+int record_size(const std::vector<MaterialSlot>& slots) {
+  return slots.empty() ? kBaseRecord : slots.back().offset + slots.back().components;
+}
 
 // Cauchy stress sigma = P F^T / J at one point, and its von Mises equivalent.
 void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) {
@@ -26,13 +51,12 @@ void stress_at(const Body& b, std::size_t L, double* sigma9, double& von_mises) 
   von_mises = std::sqrt(1.5 * dev.squaredNorm());
 }
 
-// The record of particle J of a body whose generalized displacements and velocities
+// The base record of particle J of a body whose generalized displacements and velocities
 // (ghosts included) are d and v.
 void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std::vector<Vec3>& v, double* out) {
   const Vec3 u = rk::interpolate(b.interpolation, d, J);  // physical displacement and velocity
   const Vec3 w = rk::interpolate(b.interpolation, v, J);
   const Vec3 p = b.cloud.X[J] + u;
-  const Vec3 h = b.director ? b.director->h[J] : Vec3::Zero();
   std::copy_n(p.data(), 3, out);
   std::copy_n(u.data(), 3, out + 3);
   std::copy_n(w.data(), 3, out + 6);
@@ -43,7 +67,19 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   out[11] = b.cloud.volume[J];
   out[12] = b.F[J].determinant();
   stress_at(b, static_cast<std::size_t>(J), out + 13, out[22]);
-  std::copy_n(h.data(), 3, out + 23);
+}
+
+// The material fields of particle J into its record, at the slots' offsets.
+void material_record(const std::vector<materials::OutputField>& own, const std::vector<MaterialSlot>& slots, Index J,
+                     double* out) {
+  for (const auto& slot : slots) {
+    double* to = out + slot.offset;
+    std::fill(to, to + slot.components, 0.0);
+    for (const auto& f : own)
+      if (f.name == slot.name && f.values != nullptr)
+        std::copy_n(f.values + static_cast<std::size_t>(J) * static_cast<std::size_t>(f.components),
+                    std::min(f.components, slot.components), to);
+  }
 }
 
 }  // namespace
@@ -64,7 +100,7 @@ void gather_in_original_order(const par::Comm& comm, const std::vector<double>& 
 BodyFields body_fields(const Body& b, const par::Comm& comm) {
   BodyFields f;
   const std::size_t n = static_cast<std::size_t>(b.owned_end() - b.owned_begin());
-  for (auto* v : {&f.position, &f.displacement, &f.velocity, &f.director}) v->resize(3 * n);
+  for (auto* v : {&f.position, &f.displacement, &f.velocity}) v->resize(3 * n);
   f.volume.resize(n);
   f.J.resize(n);
   f.von_mises.resize(n);
@@ -75,7 +111,7 @@ BodyFields body_fields(const Body& b, const par::Comm& comm) {
     b.ghosts.pull(d);
     b.ghosts.pull(v);
   }
-  double record[kRecord];
+  double record[kBaseRecord];
   for (std::size_t k = 0; k < n; ++k) {
     point_record(b, b.owned_begin() + static_cast<Index>(k), d, v, record);
     std::copy_n(record, 3, &f.position[3 * k]);
@@ -85,7 +121,6 @@ BodyFields body_fields(const Body& b, const par::Comm& comm) {
     f.J[k] = record[12];
     std::copy_n(record + 13, 9, &f.cauchy_stress[9 * k]);
     f.von_mises[k] = record[22];
-    std::copy_n(record + 23, 3, &f.director[3 * k]);
   }
   if (b.distributed()) {
     // A body left in the one-process numbering has no original ids (build_world.cpp).
@@ -94,7 +129,7 @@ BodyFields body_fields(const Body& b, const par::Comm& comm) {
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
       own_ids.push_back(static_cast<double>(b.original_id.empty() ? i : b.original_id[static_cast<std::size_t>(i)]));
     const std::vector<double> ids = comm.gather(own_ids);
-    for (auto* field : {&f.position, &f.displacement, &f.velocity, &f.director})
+    for (auto* field : {&f.position, &f.displacement, &f.velocity})
       gather_in_original_order(comm, ids, *field, 3);
     for (auto* field : {&f.volume, &f.J, &f.von_mises}) gather_in_original_order(comm, ids, *field, 1);
     gather_in_original_order(comm, ids, f.cauchy_stress, 9);
@@ -132,18 +167,19 @@ void require_finite(const World& world, const std::vector<Vec3>& positions,
 }  // namespace
 
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions) {
-  bool any_director = false;
+  const std::vector<MaterialSlot> slots = material_slots(world);
+  const int record_length = record_size(slots);
   std::size_t total = 0;
   for (const auto& b : world.bodies) {
-    any_director |= b->director.has_value();
     total += static_cast<std::size_t>(b->owned_end() - b->owned_begin()) + b->output_halo.ghost_count();
   }
 
   io::Frame frame;
   std::vector<io::PointField> fields = {
       {"displacement", 3, {}}, {"velocity", 3, {}},      {"body_id", 1, {}},   {"particle_id", 1, {}}, {"volume", 1, {}},
-      {"J", 1, {}},            {"cauchy_stress", 9, {}}, {"von_mises", 1, {}}, {"director", 3, {}}};
-  const std::size_t n_fields = any_director ? fields.size() : fields.size() - 1;
+      {"J", 1, {}},            {"cauchy_stress", 9, {}}, {"von_mises", 1, {}}};
+  for (const auto& slot : slots) fields.push_back({slot.name, slot.components, {}});
+  const std::size_t n_fields = fields.size();
   for (std::size_t f = 0; f < n_fields; ++f) fields[f].values.reserve(total * static_cast<std::size_t>(fields[f].components));
   positions.clear();
   positions.reserve(total);
@@ -151,8 +187,9 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     positions.emplace_back(record[0], record[1], record[2]);
     const double* value = record + 3;
     for (std::size_t f = 0; f < n_fields; ++f) {
-      fields[f].values.insert(fields[f].values.end(), value, value + kFieldComponents[f]);
-      value += kFieldComponents[f];
+      const int components = fields[f].components;
+      fields[f].values.insert(fields[f].values.end(), value, value + components);
+      value += components;
     }
   };
 
@@ -175,14 +212,16 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   std::vector<double> records;
   std::vector<std::int64_t> point_of;  // distributed: particle -> point of this frame, or -1
   std::int64_t offset = 0;             // the body's first point in this frame
-  double record[kRecord];
+  std::vector<double> record(static_cast<std::size_t>(record_length));
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
     const Index begin = b.owned_begin(), end = b.owned_end();
+    const std::vector<materials::OutputField> own = material_output_fields(b);
     if (!b.distributed()) {
       for (Index J = 0; J < end; ++J) {
-        point_record(b, J, b.d, b.v, record);
-        append(record);
+        point_record(b, J, b.d, b.v, record.data());
+        material_record(own, slots, J, record.data());
+        append(record.data());
       }
       add_cells(b, [&](Index J) { return offset + J; });
       offset += end;
@@ -195,14 +234,19 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     ghosted_v = b.v;
     b.ghosts.pull(ghosted_d);
     b.ghosts.pull(ghosted_v);
-    records.assign(b.size() * kRecord, 0.0);
-    for (Index J = begin; J < end; ++J) point_record(b, J, ghosted_d, ghosted_v, records.data() + kRecord * J);
-    b.output_halo.pull(records.data(), kRecord);
+    const auto length = static_cast<std::size_t>(record_length);
+    records.assign(b.size() * length, 0.0);
+    for (Index J = begin; J < end; ++J) {
+      double* out = records.data() + length * static_cast<std::size_t>(J);
+      point_record(b, J, ghosted_d, ghosted_v, out);
+      material_record(own, slots, J, out);
+    }
+    b.output_halo.pull(records.data(), record_length);
     point_of.assign(b.size(), -1);
     std::int64_t next = offset;
     frame.duplicate_points.resize(static_cast<std::size_t>(offset), 0);
     for (Index J = begin; J < end; ++J) {
-      append(records.data() + kRecord * J);
+      append(records.data() + length * static_cast<std::size_t>(J));
       point_of[static_cast<std::size_t>(J)] = next++;
     }
     frame.duplicate_points.resize(static_cast<std::size_t>(next), 0);
@@ -210,7 +254,7 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     if (cells == CellOutput::Mesh)
       for (const auto& group : b.output_halo.ghosts_by_owner())
         for (Index J : group) {
-          append(records.data() + kRecord * J);
+          append(records.data() + length * static_cast<std::size_t>(J));
           point_of[static_cast<std::size_t>(J)] = next++;
         }
     frame.duplicate_points.resize(static_cast<std::size_t>(next), 1);
@@ -219,7 +263,6 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   }
   if (cells == CellOutput::Points) frame.cells = io::vertex_cells(positions.size());
   frame.points = &positions;
-  fields.resize(n_fields);
   require_finite(world, positions, fields);
   frame.point_fields = std::move(fields);
   return frame;

@@ -24,7 +24,7 @@ constexpr double kPi = 3.14159265358979323846;
 // F per point (72; the stress, positions and accelerations are not stored), mass,
 // inertia, volume, spacing, stabilization weight, a surface term's quadrature, the
 // set-up's kd-tree and support radii (freed before the run, but part of the peak), the
-// director arrays of an LCE body (h, h0, rate, F_start, grad_h, flux, divergence) and the
+// per-point state of a stateful material (an LCE body's director arrays) and the
 // force pass's per-thread buffers. The largest of the geometries' measured peaks beyond
 // the operators (the RBC shell's), rounded up, plus what the volume constraint's copy of
 // its rows in particle order adds on that shell; docs/verification/performance.md holds
@@ -44,7 +44,7 @@ constexpr double kFramePointBytes = 25.0 * 8.0;
 constexpr double kFrameElementBytes = 10.0 * 8.0 + 1.0;
 // What the process holds before any body: the libraries (VTK, OpenMP) and the scene.
 constexpr double kProcessBytes = 30e6;
-// A checkpoint: d, v, the force and the director per particle, and the inertia.
+// A checkpoint: d, v, the force and a material's state vector per particle, and the inertia.
 constexpr double kCheckpointBytes = 4.0 * 24.0 + 8.0;
 // The address space a process maps before its arrays (libraries, thread stacks).
 constexpr double kAddressSpaceBaseline = 1.0e9;

@@ -102,7 +102,7 @@ io::Json energy_json(const EnergyLedger& e) {
   j.set("interface", e.interface);
   j.set("external_work", e.external);
   j.set("active_work", e.active);
-  j.set("director_work", e.director);
+  j.set("state_work", e.state);
   j.set("dissipated", e.dissipated);
   j.set("initial", e.initial);
   j.set("relative_error", e.relative_error());
@@ -116,9 +116,8 @@ std::string relax_progress(const Integrator& integrator, const IntegratorSetting
   std::string line = fmt::format("residual {:.2e} (target {:.0e}), kinetic {:.1e} (target {:.0e})",
                                  integrator.residual(), settings.relax_force_tol, integrator.kinetic_measure(),
                                  settings.relax_velocity_tol);
-  if (settings.relax_director_tol > 0.0)
-    line += fmt::format(", director {:.1e} (target {:.0e})", integrator.director_measure(),
-                        settings.relax_director_tol);
+  if (settings.relax_state_tol > 0.0)
+    line += fmt::format(", state {:.1e} (target {:.0e})", integrator.state_measure(), settings.relax_state_tol);
   return line;
 }
 
@@ -439,7 +438,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
       json.set("converged", integrator.converged() && (!finish || finish->converged));
       json.set("residual", integrator.residual());
       json.set("kinetic_measure", integrator.kinetic_measure());
-      json.set("director_residual", integrator.director_residual());
+      json.set("state_residual", integrator.state_residual());
     }
     for (const auto& t : world->terms) t->report(*world, json);
     if (shape_body) {

@@ -61,8 +61,8 @@ FrequencyEstimate largest_frequency(World& world, int max_iterations, double tol
   // round-off (the force's round-off over the force change) both near 1e-6 and below.
   const double delta = 1e-6 * shortest_spacing;
   // The forces at the state itself, evaluated here rather than taken from Body::force:
-  // within a step the director moves after the forces (integrator.cpp), so the kept
-  // forces belong to the previous director and their difference to the perturbed ones
+  // within a step the materials' state moves after the forces (integrator.cpp), so the
+  // kept forces belong to the previous state and their difference to the perturbed ones
   // would not be the tangent's.
   transformed_forces(world);
   for (std::size_t b = 0; b < nb; ++b) f0[b] = world.bodies[b]->force;

@@ -208,7 +208,7 @@ Outcome checkpoint_file(const std::uint8_t* data, std::size_t size) {
   bool finite = std::isfinite(w.world->time) && std::isfinite(w.integrator->dt()) && w.integrator->dt() > 0.0;
   for (const auto& b : w.world->bodies) {
     finite = finite && all_finite(b->d) && all_finite(b->v) && all_finite(b->force);
-    if (b->director) finite = finite && all_finite(b->director->h);
+    if (materials::lce::material_of(*b)) finite = finite && all_finite(materials::lce::material_of(*b)->director.h);
   }
   if (!finite) {
     std::fputs("checkpoint_file: an accepted checkpoint left a non-finite state\n", stderr);

@@ -151,9 +151,9 @@ void deform(Body& b, double amplitude = 1.0) {
   for (double v : b.cloud.volume) volume += v;
   const double h = std::cbrt(volume / static_cast<double>(b.size()));
   for (std::size_t i = 0; i < b.size(); ++i) b.d[i] = A * b.cloud.X[i] + 0.05 * amplitude * h * noise(original(b, i), 1);
-  if (b.director)
+  if (materials::lce::material_of(b))
     for (std::size_t i = 0; i < b.size(); ++i)
-      b.director->h[i] = (b.director->h[i] + 0.2 * noise(original(b, i), 2)).normalized();
+      materials::lce::material_of(b)->director.h[i] = (materials::lce::material_of(b)->director.h[i] + 0.2 * noise(original(b, i), 2)).normalized();
 }
 
 // Poisons every slot this rank does not own, so a missing ghost shows up as NaN.
@@ -162,7 +162,7 @@ void poison_unowned(Body& b) {
   for (Index i = 0; i < static_cast<Index>(b.size()); ++i)
     if (i < b.owned_begin() || i >= b.owned_end()) {
       b.d[i] = Vec3::Constant(nan);
-      if (b.director) b.director->h[i] = Vec3::Constant(nan);
+      if (materials::lce::material_of(b)) materials::lce::material_of(b)->director.h[i] = Vec3::Constant(nan);
     }
 }
 
@@ -196,9 +196,9 @@ void check_distributed_force(const std::string& text) {
     ASSERT_EQ((d.cloud.X[i] - s.cloud.X[j]).norm(), 0.0);
     scale = std::max(scale, s.force[j].norm());
     error = std::max(error, (d.force[i] - s.force[j]).norm());
-    if (d.director && d.director->frank) {
-      div_scale = std::max(div_scale, s.director->frank_divergence[j].norm());
-      div_error = std::max(div_error, (d.director->frank_divergence[i] - s.director->frank_divergence[j]).norm());
+    if (materials::lce::material_of(d) && materials::lce::material_of(d)->director.frank) {
+      div_scale = std::max(div_scale, materials::lce::material_of(s)->director.frank_divergence[j].norm());
+      div_error = std::max(div_error, (materials::lce::material_of(d)->director.frank_divergence[i] - materials::lce::material_of(s)->director.frank_divergence[j]).norm());
     }
   }
   scale = comm.max(scale);
@@ -209,7 +209,7 @@ void check_distributed_force(const std::string& text) {
   ASSERT_GT(scale, 0.0);
   // The same bits: each particle's sum in the one-process order (rk/row_scatter.hpp).
   EXPECT_EQ(error, 0.0);
-  if (d.director && d.director->frank) {
+  if (materials::lce::material_of(d) && materials::lce::material_of(d)->director.frank) {
     div_scale = comm.max(div_scale);
     div_error = comm.max(div_error);
     ASSERT_GT(div_scale, 0.0);
@@ -219,7 +219,7 @@ void check_distributed_force(const std::string& text) {
   // it adds them all in place and sends each ghost's sum as one record per channel (the
   // later ranks send every contribution).
   if (comm.rank() == 0 && omp_get_max_threads() == 1) {
-    const std::size_t channels = d.director && d.director->frank ? 2 : 1;
+    const std::size_t channels = materials::lce::material_of(d) && materials::lce::material_of(d)->director.frank ? 2 : 1;
     EXPECT_LE(d.force_scatter.records_sent(), channels * d.ghosts.ghost_count());
     EXPECT_GT(d.force_scatter.records_sent(), 0u);
   }

@@ -76,7 +76,7 @@ TEST(ActivityField, RadialFaceProfilePlusRimBand) {
   for (std::size_t i = 0; i < body.size(); ++i) {
     const Vec3& X = body.cloud.X[i];
     const double rho = std::hypot(X.x(), X.y()) / largest;
-    const double c = body.director->h0[i].z();
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
     const double expected = -8e3 * std::pow(1.0 - rho * rho, 3.0) + 3e3 * std::pow(1.0 - c * c, 2.0);
     worst = std::max(worst, std::abs(zeta[i] - expected));
     if (rho < 0.1) centre = zeta[i];
@@ -96,7 +96,7 @@ TEST(ActivityField, InnerLayerConfinesTheFaceActivityButNotTheRim) {
   const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
   int checked_outer = 0, checked_inner = 0;
   for (std::size_t i = 0; i < body.size(); ++i) {
-    const double c = body.director->h0[i].z();
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
     const double rim = 3e3 * (1.0 - c * c);
     if (body.cloud.surface_mask[i] & outer) {  // outer half: the rim term only
       EXPECT_NEAR(zeta[i], rim, 1e-9);
@@ -117,7 +117,7 @@ TEST(ActivityField, RimBendingLayerHasOppositeSignsInTheTwoHalves) {
   const auto zeta = zeta_field(body);
   const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
   for (std::size_t i = 0; i < body.size(); ++i) {
-    const double c = body.director->h0[i].z();
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
     const double rim = 3e3 * std::sqrt(std::max(0.0, 1.0 - c * c));
     if (body.cloud.surface_mask[i] & outer) {
       EXPECT_NEAR(zeta[i], -rim, 1e-9);
@@ -133,7 +133,7 @@ TEST(ActivityField, RimActivityAloneUsesItAsTheReferenceAmplitude) {
   const auto& body = *world->bodies.front();
   const auto zeta = zeta_field(body);
   for (std::size_t i = 0; i < body.size(); ++i) {
-    const double c = body.director->h0[i].z();
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
     EXPECT_NEAR(zeta[i], 2e3 * (1.0 - c * c), 1e-9);
   }
 }
@@ -151,7 +151,7 @@ TEST(ActivityField, ReferenceThicknessScalesTheBendingPartAndKeepsTheMean) {
   const double scale = 0.3 / 0.5;
   // side = 1 in the inner half, 0 in the outer half, 1/2 on the mid-surface.
   auto expected = [&](std::size_t i, double side) {
-    const double c = body.director->h0[i].z();
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
     return -8e3 * c * c * (0.5 + scale * (side - 0.5)) + 3e3 * (1.0 - c * c) * scale * (2.0 * side - 1.0);
   };
   int inner_count = 0, outer_count = 0;
@@ -238,7 +238,7 @@ TEST(ActivityField, FoldShareScalesTheRimWithTheCubeOfTheThickness) {
     const auto& body = *folded->bodies.front();
     const auto zeta_plain = zeta_field(*plain->bodies.front()), zeta_folded = zeta_field(body);
     for (std::size_t i = 0; i < body.size(); ++i) {
-      const double c = body.director->h0[i].z();
+      const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
       const double rim = 3e3 * (1.0 - c * c), face = -8e3 * c * c;
       EXPECT_NEAR(zeta_plain[i], face + rim, 1e-9);
       EXPECT_NEAR(zeta_folded[i], face + factor * rim, 1e-9);

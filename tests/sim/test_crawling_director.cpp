@@ -25,8 +25,8 @@ void expect_director_mirror_symmetric(bool coarse) {
   const auto world = build_world(s);
   const Body& cell = *world->bodies[0];
   ASSERT_EQ(cell.name, "cell");
-  ASSERT_TRUE(cell.director.has_value());
-  const std::vector<Vec3>& h = cell.director->h0;
+  ASSERT_TRUE((materials::lce::material_of(cell) != nullptr));
+  const std::vector<Vec3>& h = materials::lce::material_of(cell)->director.h0;
   const double size = 2.0 * s.find_body("cell")->cloud.real("radius");
   for (int axis = 0; axis < 2; ++axis) {
     const auto partner = particles::testing::mirror_partner(cell.cloud, centre, axis, 1e-9 * size);

@@ -8,9 +8,11 @@
 //   (twice) and mu (s-1), whose spread mu (s-1)^2/s is the stiffness on the unit sphere,
 //   so the step is 2 s / (L mu (s-1)^2); a mobility at which it binds relaxes to rest
 //   instead of swinging.
-// - The stop that waits for it (relax_director_tol): a slow director is still turning
+// - The stop that waits for it (relax_state_tol): a slow director is still turning
 //   when the forces settle, and with the tolerance the relaxation goes on until it rests.
 #include "sim_fixtures.hpp"
+
+#include "rkpm/sim/body_state.hpp"
 
 #include <gtest/gtest.h>
 
@@ -55,8 +57,8 @@ double residual_with_director_turned_by(double theta) {
   testing::ScopedThreads one(1);
   auto sw = testing::build_from_text(block("1e3", "0", 3));
   Body& body = *sw.world->bodies.front();
-  for (Vec3& h : body.director->h) h = Vec3(std::sin(theta), 0.0, std::cos(theta));
-  return director_residual(body);
+  for (Vec3& h : materials::lce::material_of(body)->director.h) h = Vec3(std::sin(theta), 0.0, std::cos(theta));
+  return state_residual(body);
 }
 
 TEST(DirectorResidual, ATurnedDirectorAtRestGivesTheClosedFormMolecularField) {
@@ -74,11 +76,11 @@ TEST(DirectorStableStep, AtRestItIsTwoOverMobilityTimesTheSpreadOfTheRelaxationM
   const Body& body = *sw.world->bodies.front();
   const double mu = 1e4, s = 2.0, mobility = 1e5;
   const double expected = 2.0 * s / (mobility * mu * (s - 1.0) * (s - 1.0));
-  EXPECT_NEAR(director_stable_dt(body), expected, 1e-12 * expected);
+  EXPECT_NEAR(state_stable_dt(body), expected, 1e-12 * expected);
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
   EXPECT_LT(integrator.stable_dt(), material_stable_dt(body)) << "the director's step binds";
-  EXPECT_DOUBLE_EQ(integrator.stable_dt(), director_stable_dt(body));
+  EXPECT_DOUBLE_EQ(integrator.stable_dt(), state_stable_dt(body));
 }
 
 // A director turned by +-0.5 rad in alternate particles, with a Frank term and a mobility
@@ -90,22 +92,22 @@ TEST(DirectorStableStep, AHighMobilityRelaxesToRestInsteadOfSwinging) {
   testing::ScopedThreads one(1);
   auto sw = testing::build_from_text(block("1e5", "1e-10", 4));
   Body& body = *sw.world->bodies.front();
-  for (std::size_t i = 0; i < body.director->h.size(); ++i) {
+  for (std::size_t i = 0; i < materials::lce::material_of(body)->director.h.size(); ++i) {
     const double theta = i % 2 == 0 ? 0.5 : -0.5;
-    body.director->h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
+    materials::lce::material_of(body)->director.h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
   }
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
-  EXPECT_GT(sw.settings.dt_safety * material_stable_dt(body) * 2.0 / director_stable_dt(body), 10.0);
+  EXPECT_GT(sw.settings.dt_safety * material_stable_dt(body) * 2.0 / state_stable_dt(body), 10.0);
   while (!integrator.converged() && sw.world->step < 20000) integrator.step();
   std::printf("%lld steps, residual %.3g mu, director residual %.3g\n", static_cast<long long>(sw.world->step),
-              integrator.residual(), integrator.director_residual());
+              integrator.residual(), integrator.state_residual());
   EXPECT_TRUE(integrator.converged()) << "after " << sw.world->step << " steps";
-  EXPECT_LT(integrator.director_residual(), 1e-3);
+  EXPECT_LT(integrator.state_residual(), 1e-3);
 }
 
 // A slow director: the forces and the motion settle long before it does. Without
-// relax_director_tol the relaxation stops there, the director still turning; with it,
+// relax_state_tol the relaxation stops there, the director still turning; with it,
 // it goes on until the director is at rest too.
 struct SlowDirectorStop {
   std::int64_t steps = 0;
@@ -116,21 +118,21 @@ struct SlowDirectorStop {
 SlowDirectorStop relax_slow_director(double director_tol) {
   testing::ScopedThreads one(1);
   std::string text = block("3e1", "0", 3);
-  text.replace(text.find("mode = \"relax\""), 14, "mode = \"relax\"\nrelax_director_tol = " + std::to_string(director_tol));
+  text.replace(text.find("mode = \"relax\""), 14, "mode = \"relax\"\nrelax_state_tol = " + std::to_string(director_tol));
   auto sw = testing::build_from_text(text);
-  EXPECT_EQ(sw.settings.relax_director_tol, director_tol) << "read from the scene's [integrator] table";
+  EXPECT_EQ(sw.settings.relax_state_tol, director_tol) << "read from the scene's [integrator] table";
   Body& body = *sw.world->bodies.front();
-  for (std::size_t i = 0; i < body.director->h.size(); ++i) {
+  for (std::size_t i = 0; i < materials::lce::material_of(body)->director.h.size(); ++i) {
     const double theta = i % 2 == 0 ? 0.5 : -0.5;
-    body.director->h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
+    materials::lce::material_of(body)->director.h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
   }
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
   SlowDirectorStop stop;
   while (!(stop.converged = integrator.converged()) && sw.world->step < 100000) integrator.step();
   stop.steps = sw.world->step;
-  stop.director_residual = integrator.director_residual();
-  std::printf("relax_director_tol %g: %lld steps, converged %d, residual %.3g mu, director residual %.3g\n",
+  stop.director_residual = integrator.state_residual();
+  std::printf("relax_state_tol %g: %lld steps, converged %d, residual %.3g mu, director residual %.3g\n",
               director_tol, static_cast<long long>(stop.steps), stop.converged ? 1 : 0, integrator.residual(),
               stop.director_residual);
   return stop;
@@ -157,29 +159,29 @@ TEST(DirectorStop, TheFrankDivergenceIsTrackedOnlyWhereTheStepReadsIt) {
     Body& body = *sw.world->bodies.front();
     Integrator integrator(*sw.world, sw.settings);
     integrator.initialize();
-    return body.director->frank_divergence_tracked;
+    return materials::lce::material_of(body)->director.frank_divergence_tracked;
   };
   const std::string held = block("0", "1e-11", 3), relaxing = block("1e3", "1e-11", 3);
   EXPECT_FALSE(tracked_after_initialize(held));
   EXPECT_TRUE(tracked_after_initialize(relaxing));
   std::string with_criterion = held;
-  with_criterion.insert(with_criterion.find("[integrator]\n") + 13, "relax_director_tol = 1e-4\n");
+  with_criterion.insert(with_criterion.find("[integrator]\n") + 13, "relax_state_tol = 1e-4\n");
   EXPECT_TRUE(tracked_after_initialize(with_criterion));
 
   // The held director's residual, untracked, against the same state with the pass tracking.
   auto sw = testing::build_from_text(held);
   Body& body = *sw.world->bodies.front();
-  for (std::size_t i = 0; i < body.director->h.size(); ++i) {
+  for (std::size_t i = 0; i < materials::lce::material_of(body)->director.h.size(); ++i) {
     const double theta = 0.3 * std::sin(static_cast<double>(i));
-    body.director->h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
+    materials::lce::material_of(body)->director.h[i] = Vec3(std::sin(theta), 0.0, std::cos(theta));
   }
   Integrator integrator(*sw.world, sw.settings);
   integrator.initialize();
-  ASSERT_FALSE(body.director->frank_divergence_tracked);
-  const double untracked = integrator.director_residual();
-  body.director->frank_divergence_tracked = true;
+  ASSERT_FALSE(materials::lce::material_of(body)->director.frank_divergence_tracked);
+  const double untracked = integrator.state_residual();
+  materials::lce::material_of(body)->director.frank_divergence_tracked = true;
   compute_internal_forces(body);
-  const double tracked = director_residual(body);
+  const double tracked = state_residual(body);
   ASSERT_GT(tracked, 0.0);
   EXPECT_NEAR(untracked, tracked, 1e-12 * tracked);
 }

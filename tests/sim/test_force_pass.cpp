@@ -5,6 +5,8 @@
 // through round-off, never on scheduling.
 #include "sim_fixtures.hpp"
 
+#include "rkpm/sim/body_state.hpp"
+
 #include "rkpm/rk/stabilization.hpp"
 
 #include <gtest/gtest.h>
@@ -58,8 +60,8 @@ void deform(Body& b) {
   const double h = std::cbrt(b.cloud.volume[0]);
   for (std::size_t i = 0; i < b.size(); ++i)
     b.d[i] = A * b.cloud.X[i] + 0.05 * h * Vec3(u(rng), u(rng), u(rng));
-  if (b.director)
-    for (auto& hv : b.director->h) hv = (hv + 0.2 * Vec3(u(rng), u(rng), u(rng))).normalized();
+  if (materials::lce::material_of(b))
+    for (auto& hv : materials::lce::material_of(b)->director.h) hv = (hv + 0.2 * Vec3(u(rng), u(rng), u(rng))).normalized();
 }
 
 struct Reference {
@@ -75,10 +77,10 @@ Reference unfused(Body& b) {
   for (std::size_t I = 0; I < b.size(); ++I) x[I] = nodal_position(b, static_cast<Index>(I));
   rk::deformation_gradients(b.gradient, x, F);
   const auto* lce = std::get_if<materials::lce::BodyMaterial>(&b.material);
-  if (lce) rk::deformation_gradients(b.gradient, b.director->h, grad_h);
+  if (lce) rk::deformation_gradients(b.gradient, materials::lce::material_of(b)->director.h, grad_h);
   for (std::size_t L = 0; L < b.size(); ++L) {
     if (lce) {
-      const auto p = materials::lce::director_point(*b.director, static_cast<Index>(L), grad_h[L]);
+      const auto p = materials::lce::director_point(materials::lce::material_of(b)->director, static_cast<Index>(L), grad_h[L]);
       P[L] = lce->model.first_piola(F[L], p);
       flux[L] = lce->model.frank_flux(F[L], p);
     } else {
@@ -124,10 +126,10 @@ void check_against_unfused(const std::string& cloud, const std::string& material
   EXPECT_LT(max_difference(b.force, ref.force), 1e-12 * scale);
   EXPECT_NEAR(b.stabilization_energy, ref.stabilization_energy, 1e-12 * ref.stabilization_energy);
   EXPECT_GT(ref.stabilization_energy, 0.0);
-  if (b.director && b.director->frank) {
+  if (materials::lce::material_of(b) && materials::lce::material_of(b)->director.frank) {
     const double div_scale = max_norm(ref.frank_divergence);
     ASSERT_GT(div_scale, 0.0);
-    EXPECT_LT(max_difference(b.director->frank_divergence, ref.frank_divergence), 1e-12 * div_scale);
+    EXPECT_LT(max_difference(materials::lce::material_of(b)->director.frank_divergence, ref.frank_divergence), 1e-12 * div_scale);
   }
 
   // Two threads: the same forces up to round-off, and bitwise the same on a repeat.
@@ -172,7 +174,7 @@ TEST(ForcePass, SinglePrecisionStorageGivesTheDoubleForcesToItsRoundOff) {
   ASSERT_GT(scale, 0.0);
   const double force_error = max_difference(f.force, d.force) / scale;
   const double divergence_error =
-      max_difference(f.director->frank_divergence, d.director->frank_divergence) / max_norm(d.director->frank_divergence);
+      max_difference(materials::lce::material_of(f)->director.frank_divergence, materials::lce::material_of(d)->director.frank_divergence) / max_norm(materials::lce::material_of(d)->director.frank_divergence);
   std::cout << "float against double storage: force " << force_error << ", Frank divergence " << divergence_error
             << " (relative to the largest)\n";
   EXPECT_LT(force_error, 1e-6);
@@ -188,24 +190,24 @@ TEST(ForcePass, UntrackedFrankDivergenceKeepsTheForceAndTheDirectorResidual) {
   ScopedThreads two(2);
   auto sw = build_from_text(with(with(kScene, "cloud", "generator = \"sphere\"\nradius = 2e-6\ncells = 5"), "material", kLce));
   Body& b = *sw.world->bodies.front();
-  ASSERT_TRUE(b.director && b.director->frank);
-  ASSERT_FALSE(director_relaxes(b));  // kLce declares no mobility
+  ASSERT_TRUE(materials::lce::material_of(b) && materials::lce::material_of(b)->director.frank);
+  ASSERT_FALSE(state_evolves_in_time(b));  // kLce declares no mobility
   deform(b);
-  b.director->frank_divergence_tracked = true;
+  materials::lce::material_of(b)->director.frank_divergence_tracked = true;
   compute_internal_forces(b);
   const std::vector<Vec3> tracked_force = b.force;
-  const std::vector<Vec3> tracked_divergence = b.director->frank_divergence;
-  const double tracked_residual = director_residual(b);
+  const std::vector<Vec3> tracked_divergence = materials::lce::material_of(b)->director.frank_divergence;
+  const double tracked_residual = state_residual(b);
   ASSERT_GT(max_norm(tracked_divergence), 0.0);
 
-  b.director->frank_divergence_tracked = false;
-  std::fill(b.director->frank_divergence.begin(), b.director->frank_divergence.end(), Vec3::Zero());
+  materials::lce::material_of(b)->director.frank_divergence_tracked = false;
+  std::fill(materials::lce::material_of(b)->director.frank_divergence.begin(), materials::lce::material_of(b)->director.frank_divergence.end(), Vec3::Zero());
   compute_internal_forces(b);
   EXPECT_EQ(max_difference(b.force, tracked_force), 0.0);
-  EXPECT_EQ(max_norm(b.director->frank_divergence), 0.0);  // not assembled
+  EXPECT_EQ(max_norm(materials::lce::material_of(b)->director.frank_divergence), 0.0);  // not assembled
   std::vector<Vec3> made;
-  frank_divergence(b, made);
+  materials::lce::material_of(b)->frank_divergence(b, made);
   EXPECT_LT(max_difference(made, tracked_divergence), 1e-12 * max_norm(tracked_divergence));
-  EXPECT_NEAR(director_residual(b), tracked_residual, 1e-12 * tracked_residual);
+  EXPECT_NEAR(state_residual(b), tracked_residual, 1e-12 * tracked_residual);
   ASSERT_GT(tracked_residual, 0.0);
 }

@@ -69,9 +69,9 @@ BallRun run_ball(const std::string& mobility, const std::string& zeta, const std
 TEST(LceEnergyLedger, DirectorUpdatesAreBooked) {
   // Released from a stretch, the radial director is off its equilibrium and relaxes.
   const auto e = run_ball("1e-2", "0", "[1.2, 0.9, 0.95]", 600).energy;
-  std::cout << "evolving director: director work " << e.director << " J of initial " << e.initial
+  std::cout << "evolving director: director work " << e.state << " J of initial " << e.initial
             << " J, relative ledger error " << e.relative_error() << "\n";
-  EXPECT_GT(std::abs(e.director), 1e-2 * e.initial);  // the director update did change the energy
+  EXPECT_GT(std::abs(e.state), 1e-2 * e.initial);  // the director update did change the energy
   EXPECT_LT(e.relative_error(), 2e-3);
 }
 

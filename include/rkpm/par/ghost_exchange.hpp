@@ -4,7 +4,7 @@
 // the particles a rank's rows reference never change. The ghosts are those outside
 // the rank's own range; their lists are agreed with the owners once, at set-up (one
 // exchange of ids), as CabanaPD does for peridynamics. Each step then
-//   pull:     owners send the ghosts' current values (displacements, directors);
+//   pull:     owners send the ghosts' current values (displacements, a material's coupled field);
 //   push_add: the ranks send the force contributions their rows made to ghosts back to
 //             the owners, which add them in rank order (deterministic for a given rank
 //             count).

@@ -283,13 +283,14 @@ Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>&
   }
 }
 
-// F_L and Grad_X h_L of one row together (the force pass with the Frank term). In single
+// F_L and Grad_X h_L of a per-particle vector field h, one row together (the force pass
+// of a material with a coupled field, such as the LCE's Frank term). In single
 // precision one sweep over the row gathers both (lanes::row_gradients): the row and its
 // columns are read once, and the bits are those of the two gathers apart.
 template <class Stored>
-void deformation_and_director_gradients(const GradientOperator& op, const std::vector<Stored>& grad,
-                                        const std::vector<Vec3>& X, const std::vector<Vec3>& d,
-                                        const std::vector<Vec3>& h, Index L, Mat3& F, Mat3& grad_h) {
+void deformation_and_field_gradients(const GradientOperator& op, const std::vector<Stored>& grad,
+                                     const std::vector<Vec3>& X, const std::vector<Vec3>& d,
+                                     const std::vector<Vec3>& h, Index L, Mat3& F, Mat3& grad_h) {
   if constexpr (std::is_same_v<Stored, float>) {
     const Vec3* dp = d.data();
     const Vec3* hp = h.data();
@@ -305,7 +306,7 @@ void deformation_and_director_gradients(const GradientOperator& op, const std::v
   }
 }
 
-// sum_I v_I (x) b_I(X_L) over row L: Grad_X h from directors, dF/dt from velocities,
+// sum_I v_I (x) b_I(X_L) over row L: Grad_X h from a per-particle field, dF/dt from velocities,
 // F_L from positions. The one gather every per-point gradient uses (in the relative
 // form for single-precision storage, see GradientOperator).
 inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v, Index L) {
@@ -313,7 +314,7 @@ inline Mat3 row_gradient(const GradientOperator& op, const std::vector<Vec3>& v,
 }
 
 // out[I] += w M b_I(X_L) over row L: the transposed product of row_gradient, for the
-// internal force (w M = V_L P_L) and the Frank term's divergence.
+// internal force (w M = V_L P_L) and a coupled field's flux divergence.
 inline void scatter_row(const GradientOperator& op, Index L, double w, const Mat3& M, Vec3* out) {
   if (op.single_precision())
     scatter_row(op, op.grad_float, L, w, M, out);

@@ -81,7 +81,7 @@ struct NoField {
 // g = sum_k (v_k - v_L) (x) b~_k over a row of n entries whose components sit at
 // b[0..n), b[n..2n), b[2n..3n) and whose particles are col[0..n); value(I) gives v_I;
 // for one field, or for two at once (ga from a, gb from b: the force pass gathers the
-// displacements and, with the Frank term, the directors over the same row, so the row
+// displacements and, for a material with a coupled field, that field over the same row, so the row
 // and its columns are loaded once and the two sets of sums run side by side).
 // One entry at a time, in the row's order; the vector form keeps v_k - v_L in the first
 // three lanes. Either way each of the nine sums of a field is the sequential sum, to the

@@ -15,14 +15,12 @@
 #include "rkpm/rk/nodal_integration.hpp"
 #include "rkpm/rk/row_scatter.hpp"
 #include "rkpm/rk/stabilization.hpp"
-#include "rkpm/sim/director_field.hpp"
 #include "rkpm/sim/essential_bc.hpp"
 
 // Generated from src/materials/catalog.def: each model's body_material.hpp.
 #include "materials/body_materials.hpp"
 
 #include <memory>
-#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -43,13 +41,15 @@ struct VariantAfterVoid {
 // Every alternative has the same interface (docs/theory/materials.md), so the per-step
 // functions below dispatch once per body with std::visit and call the model's inline
 // kernel per point: no virtual call per particle.
-//   static constexpr bool needs_director;  the body carries a DirectorField
-//   Mat3 first_piola(Index L, const Mat3& F, const Mat3& grad_h, Mat3* frank_flux,
-//                    const DirectorField* director) const;
-//   double energy(Index L, const Mat3& F, const DirectorField* director) const;
-//   double wave_speed(Index L, const Mat3& F, const DirectorField* director, double rho0) const;
+//   Mat3 stress(Index L, const Mat3& F) const;          first Piola-Kirchhoff P at point L
+//   double energy(Index L, const Mat3& F) const;        stored energy per reference volume
+//   double wave_speed(Index L, const Mat3& F, double rho0) const;
 //   double shear_modulus(Index L) const;
-//   std::size_t state_bytes() const;       its per-point arrays (memory accounting)
+//   std::size_t state_bytes() const;                    its per-point arrays (memory accounting)
+// and the state hooks of materials/state_hooks.hpp (a stateless model inherits them from
+// materials::Stateless; body_state.hpp calls them). A model whose stress reads the
+// gradient of a per-particle field (coupled_field, the LCE's Frank term) also has
+//   Mat3 stress_and_flux(Index L, const Mat3& F, Mat3& flux) const;
 using Material = detail::VariantAfterVoid<void
 #define RKPM_MATERIAL(model) , materials::model::BodyMaterial
 #include "materials/catalog.def"
@@ -86,8 +86,7 @@ struct Body {
   rk::RowScatter force_scatter;             // scratch of the force pass (per-thread buffers)
   rk::RowScatter point_force_scatter;       // scratch of add_point_forces (planned on first use)
 
-  Material material;
-  std::optional<DirectorField> director;
+  Material material;                        // with its per-point state (body_state.hpp)
   EssentialBC constraints;
 
   // Distributed runs (par/partition.hpp): this rank owns particles and rows
@@ -125,22 +124,27 @@ rk::RKApproximation approximation(const Body& body);
 // quantities derived from whole-body sums must (a centroid, a mean modulus).
 std::vector<Index> one_rank_order(const Body& body);
 
-// F at every integration point, the director gradient where the Frank term needs it,
-// and body.force = -f_int (the internal force) from the first Piola-Kirchhoff stress,
-// which is used and dropped row by row (72 bytes per point not stored).
-// Distributed: at the points this rank owns, after pulling the ghosts' displacements
-// (and directors) and before returning the ghosts' force contributions to their owners;
-// body.force is then complete at the owned particles.
+// The volume-weighted centre of the reference cloud, summed in the one-rank numbering:
+// the same bits for any rank count (an initial stretch and a material's initial state
+// read it, and a round-off difference would change what a particle at the centre gets).
+Vec3 reference_centroid(const Body& body);
+
+// F at every integration point (and the gradient of the material's coupled field, if
+// it has one), and body.force = -f_int (the internal force) from the first
+// Piola-Kirchhoff stress, which is used and dropped row by row (72 bytes per point not
+// stored). Distributed: at the points this rank owns, after pulling the ghosts'
+// displacements (and coupled field) and before returning the ghosts' force
+// contributions to their owners; body.force is then complete at the owned particles.
 void compute_internal_forces(Body& body);
 
 // F at this rank's integration points from the current displacements, and nothing else:
 // a third of a force pass (the gather alone). The Newton-Krylov finish carries the
-// director to new coordinates with it before their force pass.
+// material's state to new coordinates with it before their force pass.
 void update_deformation_gradients(Body& body);
 
-// The first Piola-Kirchhoff stress at point L from the stored F (and Grad_X h) and the
-// current director: what output reports. After a step it is the stress of the state the
-// frame shows (the director has moved since the force pass, at fixed positions).
+// The first Piola-Kirchhoff stress at point L from the stored F and the material's
+// current state: what output reports. After a step it is the stress of the state the
+// frame shows (the state has moved since the force pass, at fixed positions).
 Mat3 first_piola_at(const Body& body, Index L);
 
 // Stored (passive) energy sum_L V_L W(F_L) [J]; active stress is not stored energy.
@@ -160,51 +164,6 @@ inline Vec3 physical_point(const Body& body, Index J) {
 // Current outward unit normals of the boundary particles (area-weighted over the
 // boundary faces at the generalized positions x), indexed like cloud.boundary_particles.
 void current_boundary_normals(const Body& body, std::vector<Vec3>& normals);
-
-// The deformation gradient at the start of a step (DirectorField::F_start), from which
-// the director update takes the step's motion. Called before the step moves the body.
-void hold_step_start(Body& body);
-
-// Work of the active stress (Eq. 1) at this rank's points along the motion from F_from
-// (per point) to the current F, at the current director: -sum_L V_L int P_a : dF by the
-// trapezoidal rule in F [J]. 0 without activity. LCE bodies only.
-double active_work_since(const Body& body, const std::vector<Mat3>& F_from);
-
-// Director evolution over dt (Eq. 5-8: Allen-Cahn relaxation, the co-rotational rate
-// of Eq. 7 with the step's velocity gradient (F - F_start) / dt F^-1, renormalisation to unit length, and
-// h = current outward normal on the surface when anchored). LCE bodies only.
-// Distributed: at this rank's particles, and the DirectorStep is this rank's share
-// (the ghost layer holds the nodes of the boundary faces the normals need).
-struct DirectorStep {
-  double active_work = 0.0;    // work of the active stress (Eq. 1) over the step, -sum_L V_L int P_a : dF [J]
-  double energy_change = 0.0;  // change of the stored energy by the director update at fixed F [J]:
-                               // relaxation dissipates it, the anchoring (Eq. 8) may add to it
-};
-DirectorStep advance_director(Body& body, double dt);
-
-// How far the director is from its own equilibrium, where Eq. 5 at rest asks that the
-// part of dF/dh across h vanish: the largest |(I - h h^T) dF/dh| over mu at this rank's
-// particles off the anchored surface, from the current state (the Frank divergence of
-// the last force evaluation). Dimensionless (the molecular field over the shear
-// modulus); at rest it is |dh/dt| / (L mu). Measured whatever L, a held director (L = 0)
-// too; 0 for a body without a director.
-double director_residual(const Body& body);
-
-// Div_X of the Frank flux at every particle, from the state of the last force pass
-// (F, h and Grad_X h), for a body whose pass does not track it (DirectorField::
-// frank_divergence_tracked); one process only (a distributed body always tracks it).
-void frank_divergence(const Body& body, std::vector<Vec3>& divergence);
-
-// Whether the body's director relaxes by Eq. 5 (an LCE with L > 0 that evolves): the
-// only reader of the Frank divergence in a step.
-bool director_relaxes(const Body& body);
-
-// The largest step at which the explicit director update (Eq. 5-7) is stable at the
-// current state: min over this rank's particles of 2 / (L director_stiffness); infinity
-// when the director does not evolve. A mobility high enough to bind here would otherwise
-// make the director swing from step to step (its length is renormalised, so nothing
-// diverges: the run just never settles).
-double director_stable_dt(const Body& body);
 
 // The body's reference stiffness, defined once: the small-strain shear modulus mu of
 // the material at integration point (= particle) L [Pa]. The stabilization's

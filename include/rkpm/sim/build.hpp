@@ -30,8 +30,9 @@ std::unique_ptr<World> build_world(const scene::Scene& scene, const par::Comm& c
 // on one rank.
 void check_distributable_terms(const scene::Scene& scene, const World& world);
 
-// relax_finish = "newton_krylov" runs on one process, and carries a director with the
-// coordinates, so a director that relaxes by itself (LCE mobility > 0) would be an
+// relax_finish = "newton_krylov" runs on one process, and carries the materials' state
+// with the coordinates, so a state that relaxes in time by itself (an LCE with
+// mobility > 0, a viscous material) would be an
 // unknown it does not solve for: either stops the run with a SetupError naming the
 // scene's line. Passes when the scene has no such finish.
 void check_newton_krylov_finish(const scene::Scene& scene, const World& world);

@@ -28,7 +28,7 @@ struct RunClock {
 
 // The named fields of a checkpoint: "scene_digest", "time", "step", "clock.*",
 // "integrator.*" (Integrator::save_state), "bodies" (their names, one a line),
-// "body.<name>.{particles,d,v,a,director,constraint_targets}", "terms" (their names)
+// "body.<name>.{particles,d,v,a,constraint_targets}" and its material's state fields, "terms" (their names)
 // and "term.<k>.*" (Term::save_state of the k-th term).
 StateRecord checkpoint_record(const World& world, const Integrator& integrator, const RunClock& clock,
                               std::uint64_t scene_digest);

@@ -27,7 +27,7 @@ struct IntegratorSettings {
   double damping = 0.0;          // mass-proportional damping coefficient [1/s]
   double relax_force_tol = 1e-6; // residual: max_I |f_I| / (mu_mean V_I^(2/3)), mu_mean = mean_shear_modulus(body)
   double relax_velocity_tol = 1e-8;  // kinetic energy / sum over bodies of mu_mean V_body
-  double relax_director_tol = 0.0;   // director_residual bound; 0: the director is not part of the stop
+  double relax_state_tol = 0.0;      // state_residual bound; 0: the materials' state is not part of the stop
   FireParameters fire;           // relax only: the FIRE variant (fire.hpp)
   bool newton_krylov_finish = false;  // relax only: after FIRE's stop, Newton-Krylov to newton.force_tol
   NewtonKrylovSettings newton;        // its settings (newton_krylov.hpp)
@@ -43,21 +43,22 @@ struct IntegratorSettings {
 };
 
 // Energy bookkeeping [J].
-// Balance: kinetic + stored = initial + external + active + director - dissipated.
+// Balance: kinetic + stored = initial + external + active + state - dissipated.
 struct EnergyLedger {
   double kinetic = 0.0;
   double strain = 0.0;       // sum of the bodies' stored energy
   double interface = 0.0;    // energy stored by conservative terms (contact, surface, constraints)
   double external = 0.0;     // work done by loads and moving supports
-  double active = 0.0;       // work done by the active stress (Eq. 1)
-  double director = 0.0;     // stored energy changed by director updates at fixed F (Eq. 5-8):
-                             // negative by the Allen-Cahn relaxation; the co-rotational part of
-                             // Eq. 7 and the anchoring of Eq. 8 exchange energy either way
+  double active = 0.0;       // non-conservative work of the materials (the LCE's active stress, Eq. 1)
+  double state = 0.0;        // stored energy changed by the materials' state updates at fixed F:
+                             // negative where a state relaxes (the LCE director's Allen-Cahn
+                             // relaxation, Eq. 5; a viscous branch); the LCE's co-rotation
+                             // (Eq. 7) and anchoring (Eq. 8) exchange energy either way
   double dissipated = 0.0;   // removed by damping and by FIRE velocity resets
   double initial = 0.0;      // kinetic + stored at the start
 
   double total() const { return kinetic + strain + interface; }
-  // |total - (initial + external + active + director - dissipated)| relative to the largest energy involved.
+  // |total - (initial + external + active + state - dissipated)| relative to the largest energy involved.
   double relative_error() const;
 };
 
@@ -85,12 +86,12 @@ class Integrator {
   const EnergyLedger& measure_energy();
   // Relaxation: the convergence measures after the last step.
   double residual() const { return residual_; }
-  // The directors' distance from their own equilibrium (sim::director_residual), the
+  // The materials' states' distance from their own equilibrium (sim::state_residual), the
   // largest over the bodies and ranks, at the current state. Collective.
-  double director_residual() const;
-  // The same, measured after the last step when relax_director_tol > 0 (part of
+  double state_residual() const;
+  // The same, measured after the last step when relax_state_tol > 0 (part of
   // converged() then); 0 otherwise.
-  double director_measure() const { return director_measure_; }
+  double state_measure() const { return state_measure_; }
   double kinetic_measure() const { return kinetic_measure_; }
   bool converged() const;
   // The step was clamped to the stable estimate (a warning for the user).
@@ -128,14 +129,14 @@ class Integrator {
 
   // Relaxation's finish (`relax_finish = "newton_krylov"`): from the present state, Newton-
   // Krylov steps to a residual below settings.force_tol (newton_krylov.hpp). Each accepted
-  // update carries the director with it (Eq. 7's co-rotation and Eq. 8, as a step's
-  // motion does) and is booked in the ledger: the loads' work along it as their power at
+  // update carries the materials' state with it (end_state_step with a unit pseudo-time,
+  // as a step's motion does: the LCE's Eq. 7 co-rotation and Eq. 8) and is booked in the ledger: the loads' work along it as their power at
   // the new state with the update as the velocity over a unit time (exact for dead
   // loads; one-sided, so second order in the update, for follower loads), the active
-  // work, the director's energy change, and the rest of the stored energy's change as
+  // work, the state's energy change, and the rest of the stored energy's change as
   // dissipation; the kinetic energy FIRE leaves is dissipated at the start. Its force
-  // evaluations count in force_evaluations(). One process, and directors that do not
-  // relax by themselves (L = 0) only: std::invalid_argument otherwise.
+  // evaluations count in force_evaluations(). One process, and states that do not relax
+  // in time by themselves (an LCE with L = 0) only: std::invalid_argument otherwise.
   // `stepped` (optional) is called after each accepted Newton step (NewtonKrylovHooks).
   NewtonKrylovReport finish_newton_krylov(const NewtonKrylovSettings& settings,
                                           const std::function<void(const NewtonKrylovReport&)>& stepped = {});
@@ -150,11 +151,11 @@ class Integrator {
   struct StepBook {
     double h = 0.0;                             // the step taken [s]
     double old_term_power = 0.0;                // at the start of the step [W]
-    double active_work = 0.0;                   // of the active stress over the step (advance_director) [J]
+    double active_work = 0.0;                   // the materials' non-conservative work over the step [J]
     double damping_power = 0.0;                 // c sum_I m_I |v_I|^2 at the half step [W]
     double fire_dissipated = 0.0;               // kinetic energy removed by FIRE [J]
     double kinetic_of_motion = 0.0;             // kinetic energy after the second kick, before FIRE [J]
-    std::vector<double> director_energy;        // per LCE body, in body order [J]
+    std::vector<double> state_energy;           // per body with material state, in body order [J]
   };
 
   // The stages of step(), in order.
@@ -163,7 +164,7 @@ class Integrator {
   void second_kick(double h);
   void fire(StepBook& book);
   void step_back(StepBook& book);
-  void director(StepBook& book);
+  void advance_states(StepBook& book);
   void ledger(const StepBook& book);
   void check(double kinetic_of_motion);  // throws BlowUp
   void step_size_policy();
@@ -186,7 +187,7 @@ class Integrator {
   bool dt_clamped_ = false;
   EnergyLedger ledger_;
   double term_power_ = 0.0, support_power_ = 0.0;
-  double residual_ = 0.0, kinetic_measure_ = 0.0, director_measure_ = 0.0, min_J_ = 1.0;
+  double residual_ = 0.0, kinetic_measure_ = 0.0, state_measure_ = 0.0, min_J_ = 1.0;
   double energy_scale_ = 0.0;
   std::vector<double> body_shear_modulus_;  // mean_shear_modulus of each body (the residual's scale)
   double reference_energy_ = 0.0;           // sum over bodies of mu V (the kinetic measure's scale)
@@ -200,7 +201,7 @@ class Integrator {
   Vec3 centre_ = Vec3::Zero();
   Fire fire_;  // relaxation mode only
   std::vector<std::vector<Vec3>> jump_;  // step_back's scratch: each body's coordinates before the jump
-  std::vector<std::vector<Mat3>> jump_F_;  // and F of each body with a director (its active work)
+  std::vector<std::vector<Mat3>> jump_F_;  // and F of each body with material state (its active work)
   std::int64_t step_backs_ = 0;
   StepBook book_;
 };

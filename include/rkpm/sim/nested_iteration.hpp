@@ -40,8 +40,8 @@ struct Transfer {
 // matched by position in the list): the physical displacement of `to` at each of its
 // particles becomes u_h(X_J) = sum_I Psi_I(X_J) d_I of the body it corresponds to, its
 // RK approximation evaluated at the particle's reference position (the generalized
-// displacements of `to` are solved for it by a few sweeps), and the director
-// interpolated the same way and renormalised; velocities are zero. The supports'
+// displacements of `to` are solved for it by a few sweeps), and the material's state
+// interpolated the same way (transfer_material_state); velocities are zero. The supports'
 // prescribed values are imposed afterwards. Throws SetupError when a particle of `to`
 // lies outside the reach of `from`'s approximation.
 Transfer carry_state(const World& from, World& to);

@@ -3,10 +3,10 @@
 // (Jacobian-free Newton-Krylov, Knoll & Keyes 2004): the relaxation's `relax_finish =
 // "newton_krylov"` (docs/theory/relaxation.md, "The Newton-Krylov finish"). It solves f(d) = 0 for the
 // free generalized displacements of every body, f the force after the essential
-// conditions' transformation. A director is not an unknown of its own: in every
+// conditions' transformation. A material's state is not an unknown of its own: in every
 // evaluation the caller carries it from the Newton step's base state to the evaluated
-// coordinates (`Hooks::follow`: Eq. 7's co-rotation and Eq. 8's anchoring, as a step's
-// motion carries it), so the difference Jacobian includes how the director follows.
+// coordinates (`Hooks::follow`: for the LCE, Eq. 7's co-rotation and Eq. 8's anchoring,
+// as a step's motion carries it), so the difference Jacobian includes how it follows.
 #pragma once
 
 #include "rkpm/sim/world.hpp"
@@ -42,13 +42,13 @@ struct NewtonKrylovHooks {
   // The residual measure at the world's present forces (the integrator's).
   std::function<double()> residual;
   // Called at the base state of each Newton step (its forces and F current): the caller
-  // holds what `follow` carries the director from.
+  // holds what `follow` carries the materials' state from.
   std::function<void()> hold;
   // Called in every evaluation after `hold`, with the coordinates set and before their
-  // force pass: the caller moves the director from the held base state to them.
+  // force pass: the caller moves the state from the held base state to them.
   std::function<void()> follow;
   // Called after an accepted update, the world at the new coordinates with their forces
-  // and director: the caller books the update in the energy ledger and checks the state.
+  // and state: the caller books the update in the energy ledger and checks the state.
   // `from` holds each body's coordinates before the update.
   std::function<void(const std::vector<std::vector<Vec3>>& from)> carry;
   // Optional: called after each accepted Newton step with the report so far, so that a

@@ -13,8 +13,9 @@ enum class CellOutput { Mesh, Points };
 
 // Point fields: displacement, velocity (physical, interpolated with Psi), body_id,
 // particle_id (the particle's number in its body in a one-rank run), volume, J,
-// cauchy_stress (9 components), von_mises; director where a body has one (zero vectors
-// elsewhere). `positions` receives the points the frame refers to.
+// cauchy_stress (9 components), von_mises; then every field a body's material declares
+// (material_output_fields, by its declared name), zeros at bodies whose material has no
+// such field. `positions` receives the points the frame refers to.
 // Distributed: this rank's piece, its own particles and, after them, the other nodes of
 // the elements it writes (those whose lowest node it owns), whose values come from
 // their owners; a node at a piece boundary thus appears in more than one piece.
@@ -26,7 +27,7 @@ enum class CellOutput { Mesh, Points };
 // every rank: collective for a distributed body, whose ghosts are pulled and whose
 // ranks' values are gathered. Each vector holds n x components values, row by row.
 struct BodyFields {
-  std::vector<double> position, displacement, velocity, volume, J, cauchy_stress, von_mises, director;
+  std::vector<double> position, displacement, velocity, volume, J, cauchy_stress, von_mises;
 };
 BodyFields body_fields(const Body& body, const par::Comm& comm = par::Comm::self());
 

@@ -144,7 +144,7 @@ double rim_thickness_factor(const Settings& settings, const scene::ParamSet& m, 
 //             zeta_rim times (1 - f) + f (T / T_ref)^3 when zeta_rim_fold_share = f
 //             (rim_thickness_factor).
 std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& m, const sim::Body& body,
-                                   double wall_thickness, double& reference_zeta) {
+                                   const std::vector<Vec3>& h0, double wall_thickness, double& reference_zeta) {
   const std::string& profile = settings.zeta_profile;
   const double zeta = settings.zeta;
   reference_zeta = zeta != 0.0 ? zeta : settings.zeta_rim;
@@ -168,7 +168,7 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
                                  m.file(), m.line("zeta_axis")));
   const Vec3 axis = axis_raw.stableNormalized();
   const std::size_t n = body.size();
-  auto cos2 = [&](std::size_t i) { return std::min(1.0, std::pow(body.director->h0[i].dot(axis), 2)); };
+  auto cos2 = [&](std::size_t i) { return std::min(1.0, std::pow(h0[i].dot(axis), 2)); };
 
   std::vector<double> face(n, 1.0);
   const double power = settings.zeta_power;

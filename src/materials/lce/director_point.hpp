@@ -4,12 +4,12 @@
 #pragma once
 
 #include "materials/lce/liquid_crystal_elastomer.hpp"
-#include "rkpm/sim/director_field.hpp"
+#include "materials/lce/director_field.hpp"
 
 namespace rkpm::materials::lce {
 
 // h_L, h0_L and the given Grad_X h (the force pass has it at hand, freshly gathered).
-inline DirectorPoint director_point(const sim::DirectorField& dir, Index L, const Mat3& grad_h) {
+inline DirectorPoint director_point(const DirectorField& dir, Index L, const Mat3& grad_h) {
   DirectorPoint p;
   p.h = dir.h[L];
   p.h0 = dir.h0[L];
@@ -18,7 +18,7 @@ inline DirectorPoint director_point(const sim::DirectorField& dir, Index L, cons
 }
 
 // h_L, h0_L and Grad_X h as the last force pass stored it (zero without the Frank term).
-inline DirectorPoint director_point(const sim::DirectorField& dir, Index L) {
+inline DirectorPoint director_point(const DirectorField& dir, Index L) {
   return director_point(dir, L, dir.frank ? dir.grad_h[L] : Mat3::Zero());
 }
 

@@ -12,7 +12,7 @@
 
 namespace rkpm::materials::mooney_rivlin {
 
-void build(const scene::BodySpec& spec, sim::Body& body) {
+std::string build(const scene::BodySpec& spec, sim::Body& body) {
   const Settings s = settings_table().read(spec.material);
   const auto& cloud = body.cloud;
   MooneyRivlin base;
@@ -24,7 +24,7 @@ void build(const scene::BodySpec& spec, sim::Body& body) {
   if (s.grade_axis < 0) {
     material.at_point.assign(cloud.size(), base);
     body.material = std::move(material);
-    return;
+    return {};
   }
   // Eq. 18: value = base * (a (X_axis - X_min) / L0 + b), L0 = the body's extent by default.
   GradedMooneyRivlin graded;
@@ -43,6 +43,7 @@ void build(const scene::BodySpec& spec, sim::Body& body) {
   material.at_point.reserve(cloud.size());
   for (const auto& X : cloud.X) material.at_point.push_back(graded.at(X));
   body.material = std::move(material);
+  return {};
 }
 
 }  // namespace rkpm::materials::mooney_rivlin

@@ -8,11 +8,12 @@
 
 namespace rkpm::materials::neo_hookean {
 
-void build(const scene::BodySpec& spec, sim::Body& body) {
+std::string build(const scene::BodySpec& spec, sim::Body& body) {
   BodyMaterial material;
   material.model = settings_table().read(spec.material);
   material.model.validate();
   body.material = std::move(material);
+  return {};
 }
 
 }  // namespace rkpm::materials::neo_hookean

@@ -23,7 +23,9 @@ std::unique_ptr<Body> particle_body(const std::string& name, const std::vector<V
   mr.c1 = 400.0;
   mr.c2 = 100.0;
   mr.lambda = 2000.0;
-  body->material = materials::mooney_rivlin::BodyMaterial{std::vector<materials::MooneyRivlin>(n, mr)};
+  materials::mooney_rivlin::BodyMaterial material;
+  material.at_point.assign(n, mr);
+  body->material = std::move(material);
   return body;
 }
 
