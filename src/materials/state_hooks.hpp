@@ -17,6 +17,7 @@
 // finish's base state), output_fields (frames) and transfer_state (nested iteration).
 #pragma once
 
+#include "rkpm/common/exact_sum.hpp"
 #include "rkpm/common/types.hpp"
 
 #include <cstddef>
@@ -36,8 +37,12 @@ namespace rkpm::materials {
 struct StateUpdate {
   double active_work = 0.0;    // non-conservative work the material did on the motion (the LCE's
                                // active stress, Eq. 1): -sum_L V_L int P_a : dF over the step
-  double energy_change = 0.0;  // change of the stored energy by the update at fixed F: a relaxing
-                               // state dissipates it (< 0); an imposed one (the LCE anchoring) may add
+  // The stored energy the update changes at fixed F, as the exact sums before and after
+  // it (this rank's points): the ranks' sums merge exactly (par::Comm::sum), so the
+  // change has the same bits on any rank count. A relaxing state dissipates (after <
+  // before); an imposed one (the LCE anchoring) may add.
+  ExactSum energy_before, energy_after;
+  double energy_change() const { return energy_after.value() - energy_before.value(); }
 };
 
 // A per-particle vector field whose reference gradient enters the stress (the LCE's

@@ -82,6 +82,12 @@ void Integrator::evaluate_forces() {
   term_power_ = power_of_terms();
 }
 
+// The stored energy an update changed, over every rank: the exact sums merged, then
+// differenced (the same bits on any rank count).
+double Integrator::state_energy_change(const materials::StateUpdate& update) const {
+  return world_.comm->sum(update.energy_after) - world_.comm->sum(update.energy_before);
+}
+
 double Integrator::power_of_terms() const {
   double p = 0.0;
   for (const auto& t : world_.terms) p += t->power(world_);
@@ -355,7 +361,7 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
         load_material_state(b, base_state[k], "");
         const materials::StateUpdate d = end_state_step(b, 1.0);
         active += world_.comm->sum(d.active_work);
-        state_change += world_.comm->sum(d.energy_change);
+        state_change += state_energy_change(d);
       }
   };
   hooks.carry = [&](const std::vector<std::vector<Vec3>>& from) {
@@ -389,7 +395,7 @@ void Integrator::advance_states(StepBook& book) {
     if (has_material_state(*bp)) {
       const materials::StateUpdate d = end_state_step(*bp, book.h);
       book.active_work += world_.comm->sum(d.active_work);
-      book.state_energy.push_back(world_.comm->sum(d.energy_change));
+      book.state_energy.push_back(state_energy_change(d));
     }
 }
 

@@ -114,6 +114,13 @@ std::vector<Malformed> malformed_scenes() {
            "[body.director]\ninitial = \"radial\"\n",
        "bad.toml:15: [body.director]: expected no director table for model = \"neo_hookean\" "
        "(only model = \"lce\" has a director)"},
+      {"viscoelastic with fewer relaxation times than branches",
+       replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000", "model = \"viscoelastic\"\nmu = 1000\nbeta = [1, 0.5]\ntau = [1e-3]"),
+       "bad.toml:15: [body.material] tau = [0.001]: expected one relaxation time per branch: 2 value(s), as beta has"},
+      {"viscoelastic with five branches",
+       replaced(kBase, "model = \"mooney_rivlin\"\nc1 = 1000",
+                "model = \"viscoelastic\"\nmu = 1000\nbeta = [1, 1, 1, 1, 1]\ntau = [1, 1, 1, 1, 1]"),
+       "bad.toml:14: [body.material] beta = [1, 1, 1, 1, 1]: expected at most 4 Maxwell branches"},
       {"fixed director of zero length",
        kBase + kLceBody + "[body.director]\ninitial = \"fixed\"\nvector = [0, 0, 0]\n",
        "bad.toml:26: [body.director] vector = [0, 0, 0]: expected a non-zero vector"},

@@ -56,7 +56,7 @@ TEST(ParamSet, ErrorNamesFileLineSectionKeyAndValue) {
 TEST(ParamRegistry, VariantSectionsOfferExactlyTheirVariants) {
   const ParamRegistry& r = ParamRegistry::instance();
   EXPECT_EQ(r.variant_names("body.cloud"), (std::vector<std::string>{"block", "sphere", "shell", "vtu", "gmsh"}));
-  EXPECT_EQ(r.variant_names("body.material"), (std::vector<std::string>{"lce", "mooney_rivlin", "neo_hookean"}));
+  EXPECT_EQ(r.variant_names("body.material"), (std::vector<std::string>{"lce", "mooney_rivlin", "neo_hookean", "viscoelastic"}));
   EXPECT_EQ(r.variant_names("term"), (std::vector<std::string>{"body_force", "surface_pressure", "volume_constraint",
                                                                "surface_tension", "contact", "wall_contact"}));
   EXPECT_EQ(r.section("term")->specs.front().choices, r.variant_names("term"));

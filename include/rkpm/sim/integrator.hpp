@@ -165,6 +165,7 @@ class Integrator {
   void fire(StepBook& book);
   void step_back(StepBook& book);
   void advance_states(StepBook& book);
+  double state_energy_change(const materials::StateUpdate& update) const;
   void ledger(const StepBook& book);
   void check(double kinetic_of_motion);  // throws BlowUp
   void step_size_policy();

@@ -19,13 +19,13 @@ namespace {
 // points (LiquidCrystalElastomer::director_energy): at fixed F and Grad h, the rest of
 // sum_L V_L W does not change when the director does, so the difference of two of
 // these is the update's change of the passive energy.
-double director_energy(const sim::Body& body, const BodyMaterial& m) {
+ExactSum director_energy(const sim::Body& body, const BodyMaterial& m) {
   const DirectorField& dir = m.director;
   ExactSum total;
 #pragma omp parallel for schedule(static) reduction(+ : total)
   for (Index L = body.owned_begin(); L < body.owned_end(); ++L)
     total.add(body.gradient.weight[L] * m.model.director_energy(body.F[L], dir.h[L], dir.h0[L]));
-  return total.value();
+  return total;
 }
 
 // Whether the director relaxes by Eq. 5 (L > 0 and it evolves): the only reader of the
@@ -99,8 +99,8 @@ StateUpdate BodyMaterial::end_step(sim::Body& body, double dt) {
   // velocity gradient in the reference frame). No gather over the rows: their sweep over
   // the velocities would be a second pass over the operator, the work of the force
   // pass's gather of F again (docs/verification/relaxation.md measures the saving).
-  const double energy_before = director_energy(body, *this);
   StateUpdate result = work_since(body, dir.F_start);
+  result.energy_before = director_energy(body, *this);
 
   if (dir.evolve) {
 #pragma omp parallel for schedule(static)
@@ -129,7 +129,7 @@ StateUpdate BodyMaterial::end_step(sim::Body& body, double dt) {
       h = h.dot(nrm) >= 0.0 ? nrm : Vec3(-nrm);
     }
   }
-  result.energy_change = director_energy(body, *this) - energy_before;
+  result.energy_after = director_energy(body, *this);
   return result;
 }
 
