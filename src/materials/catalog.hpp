@@ -19,8 +19,7 @@ struct Body;
 namespace rkpm::materials {
 
 // Each model's entry points. `build` sets body.material, its per-point state included,
-// from the validated [body.material] table (and the model's own sub-tables, such as the
-// LCE's [body.director]); the cloud, the RK operators and the initial state exist when
+// from the validated [body.material] table (and the model's own sub-tables); the cloud, the RK operators and the initial state exist when
 // it is called. It returns a note for the run log, or nothing, and throws
 // std::invalid_argument naming the parameter.
 #define RKPM_MATERIAL(model)                                       \
@@ -35,8 +34,9 @@ namespace rkpm::materials {
 std::vector<scene::ParamTable> material_tables();
 
 // A [body.material] variant table with its selector set: the start of every model's table.
-// `director`: the model carries a director field, so its bodies take a [body.director] table.
-scene::ParamTable material_table(std::string model, std::string help, bool director = false);
+// `own_sections`: the model's own sub-tables of [[body]] (the LCE's [body.director]),
+// which only its bodies take; BodySpec::material_section reads them.
+scene::ParamTable material_table(std::string model, std::string help, std::vector<scene::ParamTable> own_sections = {});
 
 // Gives the body the material its validated [body.material] table declares (rkpm_sim),
 // and returns the model's note for the run log (empty: none). Throws sim::SetupError

@@ -4,13 +4,16 @@
 
 namespace rkpm::materials {
 
-scene::ParamTable material_table(std::string model, std::string help, bool director) {
+scene::ParamTable material_table(std::string model, std::string help, std::vector<scene::ParamTable> own_sections) {
   scene::ParamTable t;
   t.section = "body.material";
   t.selector_key = "model";
   t.selector_value = std::move(model);
   t.help = std::move(help);
-  if (director) t.companion_sections = {"body.director"};
+  for (auto& section : own_sections) {
+    t.companion_sections.push_back(section.section);
+    t.companions.push_back(std::move(section));
+  }
   return t;
 }
 

@@ -40,7 +40,11 @@ ParamRegistry::ParamRegistry() {
 
   auto models = materials::material_tables();
   tables_.push_back(selector_section("body.material", "model", models, "The body's constitutive model."));
+  std::vector<ParamTable> model_sections;  // each model's own sub-tables of [[body]]
+  for (auto& model : models) append(model_sections, std::move(model.companions));
+  for (auto& model : models) model.companions.clear();
   append(tables_, std::move(models));
+  append(tables_, std::move(model_sections));
 
   append(tables_, tables::body_details());
 

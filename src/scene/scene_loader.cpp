@@ -22,10 +22,23 @@ namespace fs = std::filesystem;
 // What may appear at the top level and inside a [[body]] besides its own keys.
 const std::vector<std::string> kSections = {"scene", "integrator", "output", "body", "term"};
 const std::vector<std::string> kArraySections = {"body", "term"};
-const std::vector<std::string> kBodySubsections = {"cloud", "material", "director", "rk", "initial", "boundary"};
-
 bool contains(const std::vector<std::string>& list, std::string_view word) {
   return std::find(list.begin(), list.end(), word) != list.end();
+}
+
+// The name of a [[body]] sub-table from its section ("body.rk" -> "rk").
+std::string sub_table_name(const std::string& section) { return section.substr(section.find('.') + 1); }
+
+// The sub-tables a [[body]] may have: its own, and every material model's companions.
+const std::vector<std::string>& body_subsections() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = {"cloud", "material", "rk", "initial", "boundary"};
+    for (const auto& model : ParamRegistry::instance().variant_names("body.material"))
+      for (const auto& section : ParamRegistry::instance().variant("body.material", model)->companion_sections)
+        if (!contains(all, sub_table_name(section))) all.push_back(sub_table_name(section));
+    return all;
+  }();
+  return names;
 }
 
 // Whether the [body.material] model `model` takes the section `section` alongside
@@ -120,29 +133,33 @@ class Loader {
     // The body's own keys sit beside its sub-tables; an unknown key lists both.
     for (const auto& [key, node] : body_table) {
       const std::string name(key.str());
-      if (contains(kBodySubsections, name) || own->find(name)) continue;
+      if (contains(body_subsections(), name) || own->find(name)) continue;
       std::vector<std::string> known = own->names();
-      known.insert(known.end(), kBodySubsections.begin(), kBodySubsections.end());
+      known.insert(known.end(), body_subsections().begin(), body_subsections().end());
       throw SceneError(file_, line_of(node), "body", name, toml_text(node),
                        "a known key or sub-table: " + list_with_suggestion(name, known, false));
     }
 
     BodySpec spec;
-    spec.body = validate_table(body_table, {own}, site("body", body_line), kBodySubsections);
+    spec.body = validate_table(body_table, {own}, site("body", body_line), body_subsections());
     spec.cloud = validate_variant_table(sub_table(body_table, "cloud", body_line, true), site_of(body_table, "cloud"));
     spec.material = validate_variant_table(sub_table(body_table, "material", body_line, true), site_of(body_table, "material"));
     spec.rk = plain_sub_table(body_table, "rk");
     spec.initial = plain_sub_table(body_table, "initial");
 
-    // A director exists exactly for the models whose table says so (the LCE, seed
-    // Eq. 1-8); other models have none.
-    const bool director = takes_section(spec.model(), "body.director");
-    if (body_table.get("director") && !director) {
-      throw section_error(line_of(*body_table.get("director")), "body.director",
-                          fmt::format("no director table for model = \"{}\" (only {} has a director)", spec.model(),
-                                      models_taking("body.director")));
+    // A model's own sub-tables (the LCE's [body.director]) exist exactly for the models
+    // whose table declares them; other models reject them.
+    for (const auto& name : body_subsections()) {
+      const std::string section = "body." + name;
+      if (!contains({"cloud", "material", "rk", "initial", "boundary"}, name) && body_table.get(name) &&
+          !takes_section(spec.model(), section))
+        throw section_error(line_of(*body_table.get(name)), section,
+                            fmt::format("no {} table for model = \"{}\" (only {} has a {})", name, spec.model(),
+                                        models_taking(section), name));
     }
-    if (director) spec.director = plain_sub_table(body_table, "director");
+    if (const ParamTable* model = ParamRegistry::instance().variant("body.material", spec.model()))
+      for (const auto& section : model->companion_sections)
+        spec.material_sections.emplace(sub_table_name(section), plain_sub_table(body_table, sub_table_name(section)));
 
     if (const toml::node* node = body_table.get("boundary")) {
       if (!node->is_array_of_tables()) {

@@ -37,7 +37,7 @@ std::vector<Malformed> malformed_scenes() {
        "model, c1, c2, lambda, grade_axis, grade_a, grade_b, grade_length (did you mean \"lambda\"?)"},
       {"misspelt key of a body", replaced(kBase, "name = \"cell\"\n", "name = \"cell\"\ndensty = 3\n"),
        "bad.toml:7: [body] densty = 3: expected a known key or sub-table: name, density, cloud, material, "
-       "director, rk, initial, boundary (did you mean \"density\"?)"},
+       "rk, initial, boundary, director (did you mean \"density\"?)"},
       {"unknown section", kBase + "[integrater]\nseed = 2\n",
        "bad.toml:15: [integrater]: expected a known section: scene, integrator, output, body, term "
        "(did you mean \"integrator\"?)"},

@@ -50,7 +50,7 @@ TEST(ValidScene, DefaultsFillEveryUnwrittenKey) {
   EXPECT_EQ(b.material.real("c2"), 0.0);
   EXPECT_EQ(b.material.real("lambda"), 1e5);
   EXPECT_EQ(b.material.choice("grade_axis"), "none");
-  EXPECT_FALSE(b.director.has_value());      // only LCE bodies have a director
+  EXPECT_EQ(b.material_sections.count("director"), 0u);  // only LCE bodies have a director
   EXPECT_EQ(b.rk.choice("kernel"), "cubic");
   EXPECT_EQ(b.rk.real("support"), 2.0);
   EXPECT_EQ(b.rk.choice("basis"), "linear");
@@ -82,10 +82,10 @@ TEST(ValidScene, LceBodyGetsDefaultDirector) {
   EXPECT_EQ(gel.material.real("mu"), 1000.0);
   EXPECT_EQ(gel.material.real("s"), 2.0);
   EXPECT_EQ(gel.material.real("zeta"), 0.0);
-  ASSERT_TRUE(gel.director.has_value());
-  EXPECT_EQ(gel.director->choice("initial"), "surface_normal");
-  EXPECT_EQ(gel.director->choice("boundary"), "normal");
-  EXPECT_TRUE(gel.director->flag("evolve"));
+  ASSERT_EQ(gel.material_sections.count("director"), 1u);
+  EXPECT_EQ(gel.material_section("director").choice("initial"), "surface_normal");
+  EXPECT_EQ(gel.material_section("director").choice("boundary"), "normal");
+  EXPECT_TRUE(gel.material_section("director").flag("evolve"));
   EXPECT_EQ(gel.surfaces(), std::vector<std::string>{"surface"});
   EXPECT_EQ(s.find_body("gel"), &gel);
   EXPECT_EQ(s.find_body("nobody"), nullptr);
@@ -100,7 +100,7 @@ TEST(ValidScene, NeoHookeanBodyTakesLameConstants) {
   EXPECT_EQ(b.model(), "neo_hookean");
   EXPECT_EQ(b.material.real("mu"), 2000.0);
   EXPECT_EQ(b.material.real("lambda"), 8e3);
-  EXPECT_FALSE(b.director.has_value());  // no director: the neo-Hookean table takes none
+  EXPECT_TRUE(b.material_sections.empty());  // no director: the neo-Hookean table takes none
 }
 
 TEST(ValidScene, TermsKeepFileOrderAndDerivedDefaults) {

@@ -119,9 +119,11 @@ struct ParamTable {
   // Cloud generators: the named surfaces the cloud provides (for boundary
   // conditions and surface terms).
   std::vector<std::string> surfaces;
-  // Variants: the sections that exist only alongside this variant, e.g. "body.director"
-  // for a material model with a director field; any other variant rejects them.
+  // Variants: the sections that exist only alongside this variant (a material model's
+  // own sub-tables of [[body]], declared by the model); any other variant rejects them.
+  // `companions` holds their tables until the registry takes them in.
   std::vector<std::string> companion_sections;
+  std::vector<ParamTable> companions;
   // Consistency checks between keys of this table and derived defaults; throws
   // SceneError through ParamSet::error. May be empty.
   std::function<void(ParamSet&)> finish;

@@ -7,6 +7,7 @@
 #include "rkpm/scene/scene_error.hpp"
 
 #include <optional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,7 +18,9 @@ struct BodySpec {
   ParamSet body;                       // [[body]]: name, density
   ParamSet cloud;                      // [body.cloud]: generator and that generator's keys
   ParamSet material;                   // [body.material]: model and that model's keys
-  std::optional<ParamSet> director;    // [body.director]: present exactly for LCE bodies
+  // The material model's own sub-tables of [[body]] (ParamTable::companion_sections), by
+  // their name after "body.": present exactly for the models that declare them.
+  std::map<std::string, ParamSet> material_sections;
   ParamSet rk;                         // [body.rk]
   ParamSet initial;                    // [body.initial]
   std::vector<ParamSet> boundaries;    // [[body.boundary]]
@@ -27,6 +30,9 @@ struct BodySpec {
   const std::string& name() const { return body.text("name"); }
   const std::string& generator() const { return cloud.choice("generator"); }
   const std::string& model() const { return material.choice("model"); }
+  // [body.<name>] of the model's own sub-tables; throws std::logic_error for a name the
+  // model does not declare (a model reads only its own).
+  const ParamSet& material_section(const std::string& name) const;
   // The named surfaces the body's cloud generator provides.
   const std::vector<std::string>& surfaces() const;
 };

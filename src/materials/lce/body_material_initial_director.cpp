@@ -19,7 +19,7 @@ namespace rkpm::materials::lce {
 // gets the normal of the lowest id among them, an arbitrary choice when their normals
 // disagree: `warning` then names the first such particle.
 DirectorField initial_director(const scene::BodySpec& spec, const sim::Body& body, std::string& warning) {
-  const auto& p = *spec.director;
+  const auto& p = spec.material_section("director");
   const auto& cloud = body.cloud;
   DirectorField dir;
   const std::size_t n = cloud.size();

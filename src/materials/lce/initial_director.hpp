@@ -14,7 +14,7 @@ struct Body;
 
 namespace rkpm::materials::lce {
 
-// From the body's [body.director] table (spec.director): h = h0 per particle, the
+// From the body's [body.director] table (spec.material_section("director")): h = h0 per particle, the
 // evolve and anchoring flags, and the per-step arrays sized. `body` must have its cloud
 // (and, distributed, its original ids). `warning` receives a note for the run log when
 // the surface-normal choice is ambiguous somewhere.

@@ -7,6 +7,36 @@ namespace rkpm::materials::lce {
 
 using scene::ParamSpec;
 
+namespace {
+// [body.director]: the LCE's own sub-table of [[body]] (Eq. 5-8), read by
+// initial_director.
+scene::ParamTable director_table() {
+  scene::ParamTable t;
+  t.section = "body.director";
+  t.help = "Director field h of a liquid-crystal-elastomer body (seed Eq. 1-8). Only allowed "
+           "when [body.material] model = \"lce\"; omitted, it takes these defaults.";
+  t.specs = {
+      ParamSpec::choice("initial", {"surface_normal", "radial", "fixed"}).defaults(std::string("surface_normal"))
+          .help("Initial director h0: surface_normal = the outward normal of the nearest boundary "
+                "particle; radial = away from the body's centroid; fixed = `vector` everywhere."),
+      ParamSpec::vec3("vector", "-").defaults(Vec3(0, 0, 1))
+          .help("The uniform initial director when initial = fixed (normalised; must be non-zero)."),
+      ParamSpec::choice("boundary", {"normal", "free"}).defaults(std::string("normal"))
+          .help("normal: h = h0 = n on the boundary (anchoring, Eq. 8). free: no anchoring."),
+      ParamSpec::boolean("evolve").defaults(true)
+          .help("Evolve h by the Allen-Cahn relaxation (Eq. 5-7) with the material's mobility."),
+  };
+  t.finish = [](scene::ParamSet& p) {
+    const bool fixed = p.choice("initial") == "fixed";
+    if (!fixed && p.given("vector")) throw p.error("vector", "no vector unless initial = \"fixed\"");
+    // stableNorm: a vector of tiny or huge components is a direction too (the plain norm
+    // squares them to 0 or infinity).
+    if (fixed && p.vec3("vector").stableNorm() == 0.0) throw p.error("vector", "a non-zero vector");
+  };
+  return t;
+}
+}  // namespace
+
 const scene::SettingsTable<Settings>& settings_table() {
   static const auto table =
       scene::SettingsTable<Settings>(
@@ -14,7 +44,7 @@ const scene::SettingsTable<Settings>& settings_table() {
                          "Active liquid-crystal elastomer (seed Eq. 1-8): neo-classical free energy with "
                          "step-length anisotropy, Frank elasticity, active stress and a director field "
                          "(see [body.director]).",
-                         /*director=*/true))
+                         {director_table()}))
           .bind(&Settings::mu,
                 ParamSpec::real("mu", "Pa").greater_than(0).mark_required().help("Shear modulus mu (Eq. 2)."))
           .bind(&Settings::bulk,

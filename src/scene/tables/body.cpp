@@ -1,7 +1,7 @@
-// [[body]] and the sub-tables every body may have: director, RK approximation,
-// initial state, boundary conditions. The cloud and the material are variant
-// sections (cloud_generators.cpp; each model's params.cpp under src/materials/,
-// collected by src/materials/catalog_tables.cpp).
+// [[body]] and the sub-tables every body may have: RK approximation, initial state,
+// boundary conditions. The cloud and the material are variant sections (the cloud
+// catalog under src/clouds/; each model's params.cpp under src/materials/, collected by
+// src/materials/catalog_tables.cpp), and a model may declare sub-tables of its own.
 #include "tables/tables.hpp"
 
 #include "rkpm/scene/param_set.hpp"
@@ -10,32 +10,6 @@
 
 namespace rkpm::scene::tables {
 namespace {
-
-ParamTable director_section() {
-  ParamTable t;
-  t.section = "body.director";
-  t.help = "Director field h of a liquid-crystal-elastomer body (seed Eq. 1-8). Only allowed "
-           "when [body.material] model = \"lce\"; omitted, it takes these defaults.";
-  t.specs = {
-      ParamSpec::choice("initial", {"surface_normal", "radial", "fixed"}).defaults(std::string("surface_normal"))
-          .help("Initial director h0: surface_normal = the outward normal of the nearest boundary "
-                "particle; radial = away from the body's centroid; fixed = `vector` everywhere."),
-      ParamSpec::vec3("vector", "-").defaults(Vec3(0, 0, 1))
-          .help("The uniform initial director when initial = fixed (normalised; must be non-zero)."),
-      ParamSpec::choice("boundary", {"normal", "free"}).defaults(std::string("normal"))
-          .help("normal: h = h0 = n on the boundary (anchoring, Eq. 8). free: no anchoring."),
-      ParamSpec::boolean("evolve").defaults(true)
-          .help("Evolve h by the Allen-Cahn relaxation (Eq. 5-7) with the material's mobility."),
-  };
-  t.finish = [](ParamSet& p) {
-    const bool fixed = p.choice("initial") == "fixed";
-    if (!fixed && p.given("vector")) throw p.error("vector", "no vector unless initial = \"fixed\"");
-    // stableNorm: a vector of tiny or huge components is a direction too (the plain norm
-    // squares them to 0 or infinity).
-    if (fixed && p.vec3("vector").stableNorm() == 0.0) throw p.error("vector", "a non-zero vector");
-  };
-  return t;
-}
 
 ParamTable rk_section() {
   ParamTable t;
@@ -141,7 +115,7 @@ ParamTable body() {
 }
 
 std::vector<ParamTable> body_details() {
-  return {director_section(), rk_section(), initial_section(), boundary_section()};
+  return {rk_section(), initial_section(), boundary_section()};
 }
 
 }  // namespace rkpm::scene::tables

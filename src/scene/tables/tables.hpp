@@ -10,7 +10,7 @@ namespace rkpm::scene::tables {
 
 std::vector<ParamTable> run_sections();     // [scene], [integrator], [output]
 ParamTable body();                          // [[body]]
-std::vector<ParamTable> body_details();     // [body.director], [body.rk], [body.initial], [[body.boundary]]
+std::vector<ParamTable> body_details();     // [body.rk], [body.initial], [[body.boundary]]
 // The variants of [body.material] and [body.cloud] come from the material and cloud
 // catalogs (src/materials/catalog.hpp, src/clouds/catalog.hpp).
 
