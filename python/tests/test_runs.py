@@ -186,3 +186,36 @@ def test_the_shape_report_is_the_summary_s(tmp_path):
     np.testing.assert_allclose(shape["profile"]["thickness"], profile["thickness"], rtol=1e-7)
     with pytest.raises(ValueError, match="no surface named"):
         rkpm.Simulation.from_file(str(SOURCE / "examples" / "sag" / "sag.toml")).shape("block")
+
+
+def _ball(material, extra=None):
+    body = {"name": "ball", "density": 1000.0,
+            "cloud": {"generator": "sphere", "radius": 2e-6, "cells": 3},
+            "material": material, "initial": {"stretch": [1.1, 0.95, 0.97]}}
+    if extra:
+        body.update(extra)
+    return {"scene": {"name": "state"}, "integrator": {"mode": "dynamic", "t_end": 1e-4},
+            "output": {"every": 1e-4}, "body": [body]}
+
+
+def test_a_material_s_state_is_reached_by_its_declared_names():
+    lce = rkpm.Simulation.from_dict(
+        _ball({"model": "lce", "mu": 1e4, "bulk": 1e6, "s": 2.0, "mobility": 1e-2},
+              {"director": {"initial": "radial", "boundary": "free"}}), threads=1)
+    lce.step(20)
+    assert lce.material_field_names("ball") == ["director"]
+    h = lce.director("ball")
+    assert h.shape == (lce.reference_positions("ball").shape[0], 3)
+    assert np.array_equal(h, lce.material_field("ball", "director"))
+    assert np.allclose(np.linalg.norm(h, axis=1), 1.0, rtol=0, atol=1e-12)
+    assert lce.material_field("ball", "viscous_state") is None
+
+    gel = rkpm.Simulation.from_dict(
+        _ball({"model": "viscoelastic", "mu": 1e3, "lambda": 4e3, "beta": [1.0], "tau": [1e-5]}), threads=1)
+    gel.step(200)
+    assert gel.material_field_names("ball") == []
+    assert gel.director("ball") is None
+    energy = gel.energy()
+    # The branch dissipated a good share of the stretch's energy (the ledger's closure
+    # is tested in C++, tests/sim/test_viscoelastic_body.cpp).
+    assert -energy["state"] > 0.05 * energy["initial"]
