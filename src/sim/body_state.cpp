@@ -6,13 +6,9 @@
 namespace rkpm::sim {
 
 namespace {
-// Calls `f` with the body's material (its catalog alternative).
-template <class F>
-decltype(auto) with_material(Body& body, F&& f) {
-  return std::visit(std::forward<F>(f), body.material);
-}
-template <class F>
-decltype(auto) with_material(const Body& body, F&& f) {
+// Calls `f` with the body's material (its catalog alternative), const as the body is.
+template <class AnyBody, class F>
+decltype(auto) with_material(AnyBody& body, F&& f) {
   return std::visit(std::forward<F>(f), body.material);
 }
 }  // namespace
