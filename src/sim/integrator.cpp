@@ -550,6 +550,11 @@ void Integrator::check_state() {
     break;
   }
   diagnosis = world_.comm->first_error(diagnosis);
+  for (const auto& term : world_.terms) {
+    if (!diagnosis.empty()) break;
+    if (const std::string broken = term->diagnose(world_); !broken.empty())
+      diagnosis = fmt::format("stopped at step {} (t = {:.6g} s): {}", world_.step, world_.time, broken);
+  }
   if (!diagnosis.empty()) throw BlowUp(diagnosis);
   min_J_ = world_.comm->min(min_J);
 }

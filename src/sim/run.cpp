@@ -210,7 +210,14 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   // The step is known once the integrator has started: the frames a dynamic run writes
   // must fit the output folder before the first is written.
-  integrator.initialize();
+  // A state that fails the checks before the first step is the scene's (bodies declared
+  // overlapping, a force that overflows at once): refused as input, nothing written.
+  try {
+    integrator.initialize();
+  } catch (const BlowUp& e) {
+    log << "error: the scene's initial state: " << e.what() << "\n";
+    return kBadInput;
+  }
   // Each rank checks its own view of the output folder (a node-local disk, free space
   // read at another moment): the verdicts are agreed on, so that no rank goes on alone.
   std::string refused_disk, refused_folder;

@@ -94,5 +94,18 @@ elif grep -qiE "inf|nan" "$work/overflow/history.csv"; then
   echo "FAIL: history.csv holds a non-finite value"; failures=$((failures + 1))
 fi
 
+# Contact between clouds the law cannot hold: a substrate grid of 2.5 s0 is refused at
+# set-up naming s0; a cell declared inside the block before the first step. Neither
+# writes its output folder.
+adhesion="$source_dir/examples/adhesion/adhesion.toml"
+sed -e 's/cells = \[40, 40, 4\]/cells = [20, 20, 4]/' "$adhesion" >"$work/coarse_substrate.toml"
+expect 2 "coarse_substrate.toml:62: [term] s0 = 7.5e-07: expected an equilibrium distance that holds the clouds apart" -- \
+  "$rkpm" run "$work/coarse_substrate.toml" --out "$work/coarse_substrate" --quiet
+sed -e 's/center = \[0.0, 0.0, 10.1776e-6\]/center = [0.0, 0.0, 8.5e-6]/' "$adhesion" >"$work/overlap.toml"
+expect 2 "body 'cell' starts inside body 'substrate'" -- "$rkpm" run "$work/overlap.toml" --out "$work/overlap" --quiet
+for refused in coarse_substrate overlap; do
+  [ -e "$work/$refused" ] && { echo "FAIL: the refused run wrote $work/$refused"; failures=$((failures + 1)); }
+done
+
 echo "$failures failure(s)"
 [ "$failures" = 0 ]

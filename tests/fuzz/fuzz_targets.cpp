@@ -101,7 +101,8 @@ namespace {
 
 // A small world with what a checkpoint carries: an LCE body with its director, a
 // Mooney-Rivlin block with a fixed face (constraint targets), a contact term and FIRE
-// state in the integrator.
+// state in the integrator. s0 holds the block's 2 um grid (holding.hpp); the cell
+// starts 1 um above the block.
 constexpr std::string_view kCheckpointScene = R"([scene]
 name = "fuzz_checkpoint"
 [integrator]
@@ -112,7 +113,7 @@ damping = 1e5
 name = "cell"
 [body.cloud]
 generator = "sphere"
-center = [0, 0, 2.6e-6]
+center = [0, 0, 5e-6]
 radius = 2e-6
 cells = 4
 [body.material]
@@ -139,7 +140,7 @@ surface = "zmin"
 [[term]]
 type = "contact"
 bodies = ["cell", "block"]
-s0 = 0.75e-6
+s0 = 1.5e-6
 epsilon = 3e-15
 beta = [1e18, 1e18]
 )";

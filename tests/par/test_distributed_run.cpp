@@ -235,6 +235,11 @@ TEST(DistributedRun, AdhesionSceneOnACoarseCloudFollowsTheOneRankPath) {
   std::string text = read_text(fs::path(RKPM_SOURCE_DIR) / "examples/adhesion/adhesion.toml");
   text = replaced(text, "cells = 22", "cells = 8");
   text = replaced(text, "cells = [40, 40, 4]", "cells = [16, 16, 3]");
+  // The 2.34 um grid needs s0 = 2 um to hold the cell (holding.hpp); eps keeps |W(d0)|,
+  // and the cell starts 200 nm beyond the equilibrium gap 0.6368 s0 as in the scene.
+  text = replaced(text, "s0 = 0.75e-6", "s0 = 2e-6");
+  text = replaced(text, "epsilon = 3.265e-15", "epsilon = 6.457e-17");
+  text = replaced(text, "center = [0.0, 0.0, 10.1776e-6]", "center = [0.0, 0.0, 10.9736e-6]");
   text = replaced(text, "report_surface = \"zmax\"", "report_surface = \"zmax\"\nskin = 0.01e-6");
   text = replaced(text, "every = 0.25e-6", "every = 0.02e-6");
   const double error = run_both_ways(text, dir, 200);

@@ -19,6 +19,15 @@ inline scene::Scene crawling_scene(bool coarse) {
       body.cloud.set("cells", scene::Int3{30, 30, 3}, 0, true);
     }
   }
+  // s0 = lateral spacing / 1.25 = 1 um (the contact law holds the coarser grid);
+  // eps keeps |W(d0)| = 1e-3 J/m^2.
+  for (scene::TermSpec& term : s.terms) {
+    if (term.type() != "contact") continue;
+    term.params.set("s0", 1e-6, 0, true);
+    term.params.set("epsilon", 1.0331e-15, 0, true);
+    term.params.set("cutoff", 3e-6, 0, true);
+    term.params.set("skin", 0.5e-6, 0, true);
+  }
   return s;
 }
 

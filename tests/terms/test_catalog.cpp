@@ -91,7 +91,7 @@ gamma = 0.01
 type = "contact"
 bodies = ["b", "a"]
 epsilon = 1e-20
-s0 = 0.1
+s0 = 0.25
 beta = [3, 4]
 stiffness_law = "linear"
 substrate = "b"
@@ -123,9 +123,9 @@ TEST(TermSettings, EveryKeyReachesItsMemberAndDerivedDefaultsAreFilled) {
   const ContactSettings c = terms::contact::settings_table().read(contact[0]->params);
   EXPECT_EQ(c.bodies, (std::vector<std::string>{"b", "a"}));
   EXPECT_EQ(c.epsilon, 1e-20);
-  EXPECT_EQ(c.s0, 0.1);
-  EXPECT_DOUBLE_EQ(c.cutoff, 0.3);  // absent: 3 s0
-  EXPECT_DOUBLE_EQ(c.skin, 0.05);   // absent: 0.5 s0
+  EXPECT_EQ(c.s0, 0.25);
+  EXPECT_DOUBLE_EQ(c.cutoff, 0.75);  // absent: 3 s0
+  EXPECT_DOUBLE_EQ(c.skin, 0.125);  // absent: 0.5 s0
   EXPECT_EQ(c.beta[0], 3.0);
   EXPECT_EQ(c.beta[1], 4.0);
   EXPECT_EQ(c.law, StiffnessLaw::linear);

@@ -42,6 +42,12 @@ class Term {
   // power and limits reduced over the ranks). A scene with a term that does not is
   // refused on more than one rank with a message naming it.
   virtual bool distributed() const { return false; }
+  // Empty while the present state is one the term can act on; otherwise what went
+  // wrong, for the user (contact: one body has passed through the other's surface).
+  // Called after every step on every rank, with the same answer on each; a non-empty
+  // one stops the run as unstable (exit 3) and keeps the last good frame. A term should
+  // look only when something can have changed (contact: at each rebuild of its pairs).
+  virtual std::string diagnose(const World&) { return {}; }
   // Adds the term's own metrics to the run summary.
   virtual void report(const World&, io::Json&) const {}
   // Columns the term adds to history.csv: their names, and their values at the present

@@ -1,4 +1,5 @@
 #include "terms/contact/contact.hpp"
+#include "terms/contact/holding.hpp"
 
 #include "terms/catalog.hpp"
 #include "terms/term_support.hpp"
@@ -60,7 +61,7 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 
 Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& comm)
     : a_(a), b_(b), comm_(comm), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
-      pairs_(s.cutoff, s.skin, {}, false), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1) {
+      pairs_(s.cutoff, s.skin, {}, false), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1), s0_(s.s0) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
   molecules_[1] = molecules_of(b, s.beta[1]);
@@ -79,6 +80,40 @@ Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& co
   }
   if (!b.distributed())
     for (Index j = 0; j < static_cast<Index>(b.size()); ++j) columns_.push_back(j);
+  if (!a.cloud.boundary_faces.empty() && !b.cloud.boundary_faces.empty()) {
+    overlap_[0].emplace(a, b, "all", s.s0, 4.0 * s.cutoff, comm);
+    overlap_[1].emplace(b, a, "all", s.s0, 4.0 * s.cutoff, comm);
+  }
+}
+
+std::string Contact::diagnose(const World& world) {
+  if (pairs_.builds() == diagnosed_builds_) return {};
+  diagnosed_builds_ = pairs_.builds();
+  const std::array<const Body*, 2> bodies = {&a_, &b_};
+  for (int k = 0; k < 2; ++k) {
+    if (!overlap_[k]) continue;
+    const ContactSample s = overlap_[k]->measure();
+    if (s.deepest < 0 || s.min_gap >= -0.5 * s0_ || !overlap_[k]->encloses(s.deepest_position)) continue;
+    const Body& inside = *bodies[k];
+    const Index i = s.deepest;
+    const std::int64_t id = inside.original_id.empty() ? i : inside.original_id[static_cast<std::size_t>(i)];
+    const Vec3& X = inside.cloud.X[i];
+    const Vec3& x = s.deepest_position;
+    if (world.step == 0)
+      return fmt::format(
+          "body '{}' starts inside body '{}': its particle {} at ({:.4g}, {:.4g}, {:.4g}) m lies {:.4g} m inside "
+          "its surface (more than s0/2 = {:.4g} m). Place the bodies apart ([body.cloud] of each).",
+          inside.name, bodies[1 - k]->name, id, x.x(), x.y(), x.z(), -s.min_gap, 0.5 * s0_);
+    return fmt::format(
+        "body '{}' has passed through the surface of body '{}': its particle {} (reference position ({:.4g}, "
+        "{:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m) lies {:.4g} m inside it (more than s0/2 = {:.4g} m). "
+        "The contact law (s0 = {:.4g} m) did not keep the bodies apart: their surface particles are too far apart "
+        "for s0 where they met, or the load exceeded what the potential can bear; a finer cloud or a larger s0 "
+        "holds them (docs/theory/contact.md).",
+        inside.name, bodies[1 - k]->name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), -s.min_gap, 0.5 * s0_,
+        s0_);
+  }
+  return {};
 }
 
 ContactSample Contact::sample() const {
@@ -304,10 +339,37 @@ std::string Contact::history_values(const World&) const {
 
 namespace rkpm::terms::contact {
 
+namespace {
+
+// Refuses clouds with a surface hollow no particle of the potential pushes back from
+// (holding.hpp), naming s0 and the body whose cloud is too coarse.
+void check_holding(const scene::ParamSet& params, const sim::ContactSettings& s, const sim::Body& a,
+                   const sim::Body& b) {
+  const std::array<const sim::Body*, 2> bodies = {&a, &b};
+  for (int k = 0; k < 2; ++k) {
+    const sim::Body& body = *bodies[k];
+    const sim::Body& other = *bodies[1 - k];
+    const sim::SurfaceHollow hollow = sim::widest_facing_hollow(body, sim::reference_centroid(other));
+    if (hollow.radius < s.s0) continue;
+    throw sim::SetupError(params.error(
+        "s0", fmt::format(
+                  "an equilibrium distance that holds the clouds apart: the surface of body '{}' facing '{}' "
+                  "has a hollow {:.4g} m = {:.3f} s0 from its nearest particles (around ({:.4g}, {:.4g}, {:.4g}) "
+                  "m); its particles repel only within s0, so particles of '{}' would fall through its surface "
+                  "layer. Use s0 > {:.4g} m, or a finer cloud for '{}' (its [body.cloud] resolution: surface "
+                  "particles on a square grid less than sqrt(2) s0 = {:.4g} m apart)",
+                  body.name, other.name, hollow.radius, hollow.radius / s.s0, hollow.centre.x(), hollow.centre.y(),
+                  hollow.centre.z(), other.name, hollow.radius, body.name, std::sqrt(2.0) * s.s0)).what());
+  }
+}
+
+}  // namespace
+
 std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& world) {
   const sim::ContactSettings s = settings_table().read(params);
   sim::Body& a = named_body(world, params, s.bodies[0]);
   sim::Body& b = named_body(world, params, s.bodies[1]);
+  check_holding(params, s, a, b);
   return constructed(params,
                      [&]() -> std::unique_ptr<sim::Term> { return std::make_unique<sim::Contact>(a, b, s, *world.comm); });
 }

@@ -87,6 +87,11 @@ class Contact final : public Term {
   double stable_dt(const World&) const override;
   void report(const World&, io::Json& summary) const override;
   // With a report surface: the first body's centroid, smallest gap and contact patch.
+  // At each rebuild of the pair list (no particle has moved more than skin/2 since the
+  // last look): a boundary particle of either body more than s0/2 inside the other's
+  // closed surface (nearest face's side, confirmed by the winding number) means the law
+  // did not hold the clouds apart. The diagnosis names the particle and its depth.
+  std::string diagnose(const World&) override;
   std::vector<std::string> history_columns() const override;
   std::string history_values(const World&) const override;
 
@@ -135,6 +140,11 @@ class Contact final : public Term {
   StiffnessLaw law_;
   int substrate_;
   std::optional<ContactReport> report_;
+  // Each body's boundary particles against the other's whole surface (diagnose); absent
+  // for bodies without faces (clouds made in tests).
+  std::array<std::optional<ContactReport>, 2> overlap_;
+  double s0_;
+  std::size_t diagnosed_builds_ = 0;
   mutable std::optional<ContactSample> first_sample_, last_sample_;
   mutable double smallest_gap_ = 0.0;
   std::size_t evaluations_ = 0;

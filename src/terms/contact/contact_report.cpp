@@ -106,12 +106,17 @@ ContactSample ContactReport::measure() const {
       }
     }
     if (!std::isfinite(best)) continue;  // no face within range
-    s.min_gap = std::min(s.min_gap, signed_gap);
+    if (signed_gap < s.min_gap) {
+      s.min_gap = signed_gap;
+      s.deepest = i;
+      s.deepest_position = cell[i];
+    }
     if (signed_gap < contact_gap_) {
       patch.push_back(cell[i]);
       patch_normal.push_back(normal);
     }
   }
+  corner_positions_ = std::move(sub);
   s.contact_particles = static_cast<std::int64_t>(patch.size());
   if (!patch.empty()) {
     Vec3 c = Vec3::Zero(), n = Vec3::Zero();
@@ -127,6 +132,20 @@ ContactSample ContactReport::measure() const {
     }
   }
   return s;
+}
+
+// The solid angle each triangle subtends at p (Van Oosterom & Strackee 1983), summed
+// over the surface and divided by 4 pi: +-1 inside a closed surface, 0 outside.
+bool ContactReport::encloses(const Vec3& p) const {
+  double solid_angle = 0.0;
+  for (const auto& t : triangles_) {
+    const Vec3 a = corner_positions_[t[0]] - p, b = corner_positions_[t[1]] - p, c = corner_positions_[t[2]] - p;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    solid_angle += 2.0 * std::atan2(numerator, denominator);
+  }
+  return std::abs(solid_angle) > 2.0 * M_PI;
 }
 
 }  // namespace rkpm::sim

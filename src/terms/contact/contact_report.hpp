@@ -33,6 +33,8 @@ struct ContactSample {
   double min_gap = 0.0;          // [m]; = search range when nothing is within it
   double contact_radius = 0.0;   // [m]
   std::int64_t contact_particles = 0;
+  Index deepest = -1;            // the cell's boundary particle at min_gap (-1: none within range)
+  Vec3 deepest_position = Vec3::Zero();  // its physical position [m]
 };
 
 class ContactReport {
@@ -44,6 +46,10 @@ class ContactReport {
   ContactReport(const Body& cell, const Body& substrate, const std::string& surface, double contact_gap,
                 double range, const par::Comm& comm = par::Comm::self());
   ContactSample measure() const;
+  // Whether `p` lies inside the closed surface the substrate's faces form at the last
+  // measure() (generalized winding number, |w| > 1/2): a check of the nearest face's
+  // sign where faces meet at a sharp edge. Meaningful only for surface = "all".
+  bool encloses(const Vec3& p) const;
 
   const std::string& surface() const { return surface_; }
   double contact_gap() const { return contact_gap_; }
@@ -58,6 +64,7 @@ class ContactReport {
   std::vector<Index> corners_;                   // their particles, increasing
   std::vector<Index> cell_particles_;            // the cell's boundary particles
   par::SharedParticles shared_corners_, shared_cell_;  // distributed: gathered to every rank
+  mutable std::vector<Vec3> corner_positions_;         // physical, at the last measure()
 };
 
 }  // namespace rkpm::sim

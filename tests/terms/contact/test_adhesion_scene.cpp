@@ -13,6 +13,8 @@
 
 #include "rkpm/sim/build.hpp"
 #include "terms/contact/contact.hpp"
+#include "terms/contact/holding.hpp"
+#include "rkpm/scene/param_set.hpp"
 #include "rkpm/sim/integrator.hpp"
 
 #include <gtest/gtest.h>
@@ -44,22 +46,30 @@ void set_key(std::string& text, const std::string& anchor, const std::string& ke
                "\n" + key + " = " + value);
 }
 
-TEST(AdhesionScene, CoarseCellLandsAdheresAndDoesNotInterpenetrate) {
+// The scene at the coarse resolution above, with the substrate's lateral cell count
+// `substrate_cells` over its 20 um (spacing 20 um / cells), contact length s0, and the
+// cell's lowest point `release_gap` above the block (negative: inside it).
+std::string coarse_scene(int substrate_cells, double s0, double release_gap) {
   std::string scene = read_text(RKPM_SOURCE_DIR "/examples/adhesion/adhesion.toml");
-  ASSERT_FALSE(scene.empty());
-  const double spacing = 20e-6 / 16, s0 = spacing / 1.25, W = 1e-3, beta = 1e18;
+  EXPECT_FALSE(scene.empty());
+  const double W = 1e-3, beta = 1e18;
   const double eps = W / (0.96848 * beta * beta * s0 * s0 * s0 * s0);
-  const double release_gap = 0.6368 * s0 + 0.2e-6;
   set_key(scene, "[integrator]", "t_end", "8e-6");
   set_key(scene, "name = \"cell\"", "center", fmt::format("[0.0, 0.0, {}]", 4.5e-6 + release_gap + 5e-6));
   set_key(scene, "name = \"cell\"", "cells", "10");
   set_key(scene, "name = \"substrate\"", "origin", "[-10e-6, -10e-6, 0.0]");
   set_key(scene, "name = \"substrate\"", "size", "[20e-6, 20e-6, 4.5e-6]");
-  set_key(scene, "name = \"substrate\"", "cells", "[16, 16, 2]");
+  set_key(scene, "name = \"substrate\"", "cells", fmt::format("[{}, {}, 2]", substrate_cells, substrate_cells));
   set_key(scene, "type = \"contact\"", "s0", fmt::format("{}", s0));
   set_key(scene, "type = \"contact\"", "epsilon", fmt::format("{}", eps));
   set_key(scene, "type = \"contact\"", "beta", fmt::format("[{}, {}]", beta, beta));
+  return scene;
+}
 
+TEST(AdhesionScene, CoarseCellLandsAdheresAndDoesNotInterpenetrate) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  const double release_gap = 0.6368 * s0 + 0.2e-6;
+  const std::string scene = coarse_scene(16, s0, release_gap);
   auto w = testing::world_from_text(scene);
   const Contact* contact = nullptr;
   for (const auto& t : w.world->terms)
@@ -100,6 +110,99 @@ TEST(AdhesionScene, CoarseCellLandsAdheresAndDoesNotInterpenetrate) {
   EXPECT_LT(e.relative_error(), 2e-3);                              // the ledger closes
   EXPECT_LT(e.kinetic, 0.1 * e.dissipated);                         // settled
   EXPECT_LT(std::hypot(s.centroid.x(), s.centroid.y()), 0.05e-6);   // symmetric scene: no lateral drift
+}
+
+
+// The set-up check (holding.hpp): the substrate's top face is a square grid of spacing
+// a, so its widest facing hollow is a / sqrt(2), and the corners push a particle back
+// only from within s0: grids below sqrt(2) s0. At a = 1.40 s0 the scene builds; at 1.42 s0
+// it is refused, naming s0, the coarse body and its hollow.
+TEST(AdhesionScene, TheSetUpRefusesASubstrateTooCoarseForS0) {
+  const double spacing = 20e-6 / 16;
+  EXPECT_NO_THROW(testing::world_from_text(coarse_scene(16, spacing / 1.40, 0.6368 * spacing / 1.40 + 0.2e-6)));
+  const double s0 = spacing / 1.42;
+  try {
+    testing::world_from_text(coarse_scene(16, s0, 0.6368 * s0 + 0.2e-6));
+    FAIL() << "a substrate grid of 1.42 s0 was accepted";
+  } catch (const SetupError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(fmt::format("[term] s0 = {}", scene::format_value(s0))), std::string::npos) << what;
+    EXPECT_NE(what.find("the surface of body 'substrate' facing 'cell'"), std::string::npos) << what;
+    EXPECT_NE(what.find(fmt::format("hollow {:.4g} m = 1.004 s0", spacing / std::sqrt(2.0))), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("particles of 'cell' would fall through"), std::string::npos) << what;
+  }
+}
+
+// Only the faces that face the other body count: the block's top towards the cell, its
+// bottom towards a point below; its sides (taller than wide here) never.
+TEST(AdhesionScene, TheWidestHollowIsTakenOverTheFacesTowardsTheOtherBody) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  auto w = testing::world_from_text(coarse_scene(16, s0, 0.6368 * s0 + 0.2e-6));
+  const Body& substrate = *w.world->find_body("substrate");
+  const SurfaceHollow top = widest_facing_hollow(substrate, reference_centroid(*w.world->find_body("cell")));
+  EXPECT_NEAR(top.radius, spacing / std::sqrt(2.0), 1e-12 * spacing);
+  EXPECT_NEAR(top.centre.z(), 4.5e-6, 1e-15);
+  const SurfaceHollow bottom = widest_facing_hollow(substrate, Vec3(0.0, 0.0, -1.0));
+  EXPECT_NEAR(bottom.centre.z(), 0.0, 1e-15);
+  const double side = 0.5 * std::hypot(spacing, 4.5e-6 / 2);  // a side face's half-diagonal
+  EXPECT_LT(top.radius, side);
+  EXPECT_NEAR(widest_facing_hollow(substrate, Vec3(1.0, 0.0, 2.25e-6)).radius, side, 1e-12 * side);
+}
+
+// Bodies declared overlapping are found before the first step: the integrator's check
+// reaches the contact term's diagnosis, which names the body, the particle and its depth.
+TEST(AdhesionScene, ACellDeclaredInsideTheSubstrateIsStoppedBeforeTheFirstStep) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  auto w = testing::world_from_text(coarse_scene(16, s0, -1e-6));
+  Integrator integrator(*w.world, integrator_settings(w.scene));
+  try {
+    integrator.initialize();
+    FAIL() << "a cell 1 um inside the block started";
+  } catch (const BlowUp& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("body 'cell' starts inside body 'substrate'"), std::string::npos) << what;
+    EXPECT_NE(what.find("lies 1e-06 m inside"), std::string::npos) << what;
+  }
+}
+
+// During a run: a cell moved through the top layer between two rebuilds of the pair list
+// is reported at the next one; before the move, every rebuild of a landing finds nothing.
+TEST(AdhesionScene, ACellPushedThroughTheSurfaceIsDiagnosedAtTheNextRebuild) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  auto w = testing::world_from_text(coarse_scene(16, s0, 0.6368 * s0 + 0.2e-6));
+  Contact* contact = nullptr;
+  for (const auto& t : w.world->terms)
+    if (auto* c = dynamic_cast<Contact*>(t.get())) contact = c;
+  ASSERT_TRUE(contact);
+  Integrator integrator(*w.world, integrator_settings(w.scene));
+  integrator.initialize();
+  for (int k = 0; k < 20; ++k) integrator.step();
+  EXPECT_EQ(contact->diagnose(*w.world), "");
+  // The whole cell 2 um down: its lowest particle 2 um - release gap = 1.0 um inside.
+  Body& cell = *w.world->find_body("cell");
+  for (auto& d : cell.d) d.z() -= 2e-6;
+  compute_forces(*w.world);
+  const std::string what = contact->diagnose(*w.world);
+  EXPECT_NE(what.find("body 'cell' has passed through the surface of body 'substrate'"), std::string::npos) << what;
+  EXPECT_NE(what.find("s0/2 = "), std::string::npos) << what;
+  // Asked again without a rebuild of the pairs: not measured again.
+  EXPECT_EQ(contact->diagnose(*w.world), "");
+}
+
+// The winding number behind the diagnosis: inside and outside the block's closed surface.
+TEST(AdhesionScene, TheWindingNumberTellsInsideFromOutside) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  auto w = testing::world_from_text(coarse_scene(16, s0, 0.6368 * s0 + 0.2e-6));
+  const Body& cell = *w.world->find_body("cell");
+  const Body& substrate = *w.world->find_body("substrate");
+  ContactReport report(cell, substrate, "all", s0, 4 * 3 * s0);
+  report.measure();
+  EXPECT_TRUE(report.encloses(Vec3(0.3e-6, -0.2e-6, 2e-6)));
+  EXPECT_TRUE(report.encloses(Vec3(9.9e-6, 9.9e-6, 4.4e-6)));  // near a corner, inside
+  EXPECT_FALSE(report.encloses(Vec3(0.0, 0.0, 4.6e-6)));        // just above the top
+  EXPECT_FALSE(report.encloses(Vec3(10.1e-6, 0.0, 2e-6)));      // beside a side
+  EXPECT_FALSE(report.encloses(Vec3(0.0, 0.0, -1e-6)));         // below
 }
 
 }  // namespace

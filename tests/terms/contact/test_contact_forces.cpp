@@ -230,7 +230,7 @@ grade_b = 0.5
 type = "contact"
 bodies = ["cell", "substrate"]
 epsilon = 1e-6
-s0 = 0.05
+s0 = 0.2               # holds both clouds: their widest surface hollows are 0.12 and 0.18
 stiffness_law = "linear"
 substrate = "{substrate}"
 )";
