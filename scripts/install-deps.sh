@@ -37,6 +37,7 @@ packages=(
   python3-numpy python3-pytest     # its arrays and its tests
   python3-mpi4py                   # the module under mpirun
   python3-matplotlib               # the Python examples' plots
+  python3-scipy                    # the Helfrich reference solver (scripts/lib/helfrich.py)
 )
 if [ "$fuzz" = 1 ]; then
   packages+=(
