@@ -1,5 +1,7 @@
-// The per-step mechanics of one body: kinematics, stress and internal force.
+// The forces of a step (compute_forces: every body's internal force, then the terms'),
+// and the per-step mechanics of one body: kinematics, stress and internal force.
 #include "rkpm/sim/body.hpp"
+#include "rkpm/sim/world.hpp"
 
 #include <omp.h>
 
@@ -12,6 +14,41 @@
 namespace rkpm::sim {
 
 rk::RKApproximation approximation(const Body& body) { return rk::RKApproximation(body.cloud, body.rk_settings); }
+
+// The order in which the force pass's row contributions reach each particle's sum
+// (rk/row_scatter.hpp): per row, the gradient row's columns, then (stabilized) the row's
+// own particle and its interpolation row; a second channel for a coupled field's flux
+// divergence when the material tracks it. On one thread and rank every sum is already in
+// the reference order (one block); otherwise the seams are planned in the one-thread
+// order, so that the force has the same bits on any thread and rank count.
+void plan_force_scatter(Body& body) {
+  const auto& op = body.gradient;
+  const auto& N = body.interpolation;
+  const bool stabilized = body.stabilization.active();
+  const materials::CoupledField field =
+      std::visit([](auto& material) { return material.coupled_field(); }, body.material);
+  const int channels = field.active() && field.flux != nullptr ? 2 : 1;
+  const int threads = rk::RowScatter::team_threads();
+  const auto n = static_cast<Index>(body.size());
+  auto& scatter = body.force_scatter;
+  if (threads == 1 && !body.distributed()) {
+    std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
+    if (stabilized) patterns.push_back({&N.row_offset, &N.col});
+    scatter.plan(n, n, patterns, threads, channels);
+    return;
+  }
+  // The columns of each row's contributions, in the order the force pass makes them.
+  const auto columns = [&](Index L, int channel, const std::function<void(Index)>& emit) {
+    rk::scatter_columns(op, L, emit);
+    if (channel == 0 && stabilized) {
+      emit(L);
+      for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) emit(N.col[k]);
+    }
+  };
+  const rk::RowScatter::Links links = body.distributed() ? body.ghosts.scatter_links() : rk::RowScatter::Links{};
+  scatter.plan_ordered(body.owned_begin(), body.owned_end(), n, threads, channels, columns,
+                       body.distributed() ? &links : nullptr);
+}
 
 namespace {
 // Whether a material has a stress kernel that also returns its coupled field's flux.
@@ -50,27 +87,8 @@ void force_pass(Body& body, const std::vector<Stored>& grad, const Material& mat
   const int threads = rk::RowScatter::team_threads();
   const int channels = divergence ? 2 : 1;
   auto& scatter = body.force_scatter;
-  if (!scatter.planned_for(threads, channels)) {
-    const auto n = static_cast<Index>(body.size());
-    if (threads == 1 && !body.distributed()) {
-      // One block: every sum is already in the reference order.
-      std::vector<rk::RowScatter::Pattern> patterns{{&op.row_offset, &op.col}};
-      if (stabilized) patterns.push_back({&N.row_offset, &N.col});
-      scatter.plan(n, n, patterns, threads, channels);
-    } else {
-      // The columns of each row's contributions, in the order the loop below makes them.
-      const auto columns = [&](Index L, int channel, const std::function<void(Index)>& emit) {
-        rk::scatter_columns(op, L, emit);
-        if (channel == 0 && stabilized) {
-          emit(L);
-          for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) emit(N.col[k]);
-        }
-      };
-      const rk::RowScatter::Links links = body.distributed() ? body.ghosts.scatter_links() : rk::RowScatter::Links{};
-      scatter.plan_ordered(body.owned_begin(), body.owned_end(), n, threads, channels, columns,
-                           body.distributed() ? &links : nullptr);
-    }
-  }
+  // Planned at set-up (plan_force_scatter); again only if the thread count changed since.
+  if (!scatter.planned_for(threads, channels)) plan_force_scatter(body);
   if (body.distributed()) {
     body.ghosts.pull(body.d);
     if (coupled) body.ghosts.pull(*field.values);
@@ -135,6 +153,12 @@ void force_pass(Body& body, const std::vector<Stored>& grad, const Material& mat
   for (double e : energy) body.stabilization_energy += e;
 }
 }  // namespace
+
+void compute_forces(World& world) {
+  for (auto& body : world.bodies) compute_internal_forces(*body);
+  // Terms in declaration order: each adds to Body::force, so the sum is deterministic.
+  for (auto& term : world.terms) term->add_forces(world);
+}
 
 // Each function below dispatches once per body (std::visit over the material catalog)
 // and calls the model's inline kernel per point (sim::Material's interface).

@@ -128,6 +128,7 @@ void Integrator::initialize() {
   for (auto& bp : world_.bodies) {
     bp->inertia = bp->mass;
     prepare_material_state(*bp, {settings_.relax_state_tol > 0.0, bp->distributed()});
+    plan_force_scatter(*bp);  // the state decides whether a coupled flux is scattered too
   }
   evaluate_forces();
   unscaled_stable_dt_ = estimate_stable_dt();

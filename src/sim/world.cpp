@@ -2,12 +2,6 @@
 
 namespace rkpm::sim {
 
-void compute_forces(World& world) {
-  for (auto& body : world.bodies) compute_internal_forces(*body);
-  // Terms in declaration order: each adds to Body::force, so the sum is deterministic.
-  for (auto& term : world.terms) term->add_forces(world);
-}
-
 double kinetic_energy(const World& world) {
   // Exact: the same bits on any thread and rank count (common/exact_sum.hpp).
   ExactSum ke;

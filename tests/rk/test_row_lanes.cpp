@@ -1,11 +1,11 @@
-// The row kernels of the single-precision operator (rk/row_lanes.hpp), in their vector
+// The row kernels of the single-precision operator (rk/row_kernels.hpp, namespace lanes), in their vector
 // and their scalar form, against the one-entry loops they replace: the same bits, for
 // rows of every length around the vector width; and the planar storage against the
 // double-precision operator.
 #include "clouds.hpp"
 #include "rkpm/common/split_mix64.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
-#include "rkpm/rk/row_lanes.hpp"
+#include "rkpm/rk/row_kernels.hpp"
 
 #include <gtest/gtest.h>
 

@@ -15,14 +15,16 @@
 // A step then computes F_L = sum_I x_I (x) b_I(X_L) (a gather over row L) and the
 // internal force f_I = sum_L V_L P_L b_I(X_L) (a scatter from the same row, into
 // per-thread buffers: rkpm/rk/row_scatter.hpp): no atomics. The simulator fuses both
-// into one pass over the operator (sim/body_mechanics.cpp); the two functions below
-// are the unfused building blocks, for tests and studies.
+// into one pass over the operator (sim/body_mechanics.cpp) with the row kernels of
+// rk/row_kernels.hpp; the untyped functions below dispatch the precision per call, for
+// tests, studies and the per-point values outside the force pass.
 #pragma once
 
 #include "rkpm/common/types.hpp"
 #include "rkpm/particles/dual_cells.hpp"
 #include "rkpm/rk/rk_approximation.hpp"
-#include "rkpm/rk/row_lanes.hpp"
+#include "rkpm/rk/operators.hpp"
+#include "rkpm/rk/row_kernels.hpp"
 
 #include <cstdint>
 #include <type_traits>
@@ -54,50 +56,6 @@ struct CsrTranspose {
   void build(const std::vector<Index>& row_offset, const std::vector<Index>& col, Index n_columns);
 };
 
-enum class GradientPrecision { Double, Float };
-
-// A sparse matrix of 3-vectors in compressed rows. Its transposed products are
-// computed as deterministic scatters from the rows (rkpm/rk/row_scatter.hpp), so no
-// transpose is stored.
-//
-// The entries are stored in double (`grad`) or in single precision (`grad_float`, half
-// the bytes a step streams; the other vector is empty). Sums are always taken in
-// double. In single precision the stored b~_I(X_L) no longer sum to zero over a row to
-// double round-off, and a gather sum_I v_I (x) b~_I would multiply that defect by |v|
-// (a position, metres away from the origin). So the single-precision operator is used
-// in its relative form: the effective entries are b~_I for I != L and b~_L - sum_J b~_J
-// for the row's own particle, i.e. every row sums to zero exactly, which is the
-// constant-reproduction property of the exact operator. Then
-//   gather:  sum_I v_I (x) b_I   = sum_I (v_I - v_L) (x) b~_I,
-//   scatter: f_I += M b~_I, and f_L -= M sum_J b~_J,
-// are exact transposes of each other (the internal force stays the derivative of the
-// discrete energy), and the deformation gradient is F_L = I + sum_I (d_I - d_L) (x) b~_I,
-// which is exactly I at rest and errs by the storage round-off times |Grad u| otherwise.
-struct GradientOperator {
-  std::vector<Index> row_offset;  // n_points + 1
-  std::vector<Index> col;         // particle I of each entry
-  std::vector<Vec3> grad;         // b_I(X_L) of each entry [1/m], double storage
-  // b_I(X_L) [1/m] in single precision, row by row in planar order: a row of n entries
-  // from entry k0 on holds its x components at [3 k0, 3 k0 + n), then its y, then its z,
-  // so the row kernels load several entries' components at once (rk/row_lanes.hpp).
-  std::vector<float> grad_float;
-  std::vector<double> weight;     // V_L: integration weight of each row [m^3]
-  Index n_columns = 0;            // particles
-
-  Index n_rows() const { return static_cast<Index>(row_offset.size()) - 1; }
-  bool single_precision() const { return !grad_float.empty(); }
-  // Row L's single-precision entries, in planar order.
-  const float* planar_row(Index L) const { return grad_float.data() + 3 * static_cast<std::size_t>(row_offset[L]); }
-  // b_I(X_L) of entry k of row L as stored (before the relative form's own-particle
-  // correction).
-  Vec3 entry(Index L, Index k) const {
-    if (!single_precision()) return grad[k];
-    const float* b = planar_row(L);
-    const Index n = row_offset[L + 1] - row_offset[L], m = k - row_offset[L];
-    return Vec3(b[m], b[n + m], b[2 * n + m]);
-  }
-};
-
 // Points on the body's surface with their weights (outward area vectors) and the shape
 // functions there: the quadrature for tractions, surface terms and the integration
 // constraint, consistent with the SCNI cells (the same boundary facets, by the same
@@ -112,22 +70,6 @@ struct BoundaryQuadrature {
   std::vector<Index> row_offset;  // shape functions at each point (CSR)
   std::vector<Index> col;
   std::vector<double> psi;
-};
-
-// Shape-function values at the particles, Psi_I(X_J): maps the generalized
-// coordinates d_I to the physical displacement u(X_J) = sum_I Psi_I(X_J) d_I.
-//
-// The values are stored in single precision (8 bytes per entry with the column, against
-// 12) and every sum runs in double. A row is used in its relative form, like the
-// single-precision gradients: the own particle J takes the weight 1 - sum_k psi_k on top
-// of its stored value (own_weight), so each row is a partition of unity to double
-// round-off whatever the float rounding of psi. A uniform field is then reproduced
-// exactly and the stabilization residual of a rigid translation is zero; a linear field
-// is reproduced to the storage's rounding (about 1e-7 of the support radius).
-struct NodalInterpolation {
-  std::vector<Index> row_offset;
-  std::vector<Index> col;
-  std::vector<float> psi;
 };
 
 // `rows` selects the rows to build (rows[L] != 0), for a rank of a distributed run that
@@ -196,114 +138,6 @@ inline Vec3 interpolate(const NodalInterpolation& N, const std::vector<Vec3>& v,
   Vec3 s = Vec3::Zero();
   for (Index k = k0; k < k1; ++k) s += static_cast<double>(N.psi[k]) * (v[N.col[k]] - vJ);
   return vJ + s;
-}
-
-// The row kernels, typed by the operator's storage `grad` (op.grad or op.grad_float): a
-// pass over many rows (the force pass) dispatches on the precision once and calls these;
-// the untyped functions further below dispatch per call. Single precision reads its rows
-// through op.planar_row (rk/row_lanes.hpp); there `grad` only selects the kernel.
-//
-// The row loops below read the operator through raw pointers and accumulate in locals:
-// with the vectors' members and a Mat3 in memory, the compiler must assume each store
-// may alias them and reloads them per entry, extra loads in the innermost loop of the
-// force pass (docs/verification/performance.md measures the pass).
-//
-// value(I) gives the field at particle I: a stored array (row_gradient) or a sum formed
-// on the fly (the positions X_I + d_I, which are not stored).
-template <class Stored, class Value>
-Mat3 row_gradient_of(const GradientOperator& op, const std::vector<Stored>& grad, const Value& value, Index L) {
-  const Index* col = op.col.data();
-  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-  if constexpr (std::is_same_v<Stored, float>) {
-    return lanes::row_gradient(col + k0, op.planar_row(L), k1 - k0, value, value(L));
-  } else {
-    // g = sum_k v_k b_k^T, one column per component of b.
-    const Stored* b = grad.data();
-    Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
-    for (Index k = k0; k < k1; ++k) {
-      const Vec3 vk = value(col[k]);
-      g0 += vk * b[k](0);
-      g1 += vk * b[k](1);
-      g2 += vk * b[k](2);
-    }
-    Mat3 g;
-    g << g0, g1, g2;
-    return g;
-  }
-}
-
-template <class Stored>
-Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
-  const Vec3* vp = v.data();
-  return row_gradient_of(op, grad, [vp](Index I) { return vp[I]; }, L);
-}
-
-// Row L's contributions w M b_I(X_L), handed to add(I, c) in the row's order: its
-// entries, then (single precision) the own-particle correction at L.
-// `scatter_columns` names the same columns in the same order (an ordered
-// rk::RowScatter plans with it).
-template <class Stored, class Add>
-void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M_in,
-                 const Add& add) {
-  const Mat3 M = M_in;
-  const Index* col = op.col.data();
-  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-  if constexpr (std::is_same_v<Stored, float>) {
-    lanes::scatter_row(col + k0, op.planar_row(L), k1 - k0, L, w, M, add);
-  } else {
-    const Stored* b = grad.data();
-    for (Index k = k0; k < k1; ++k) add(col[k], Vec3(w * (M * b[k])));
-  }
-}
-
-template <class Stored>
-void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M,
-                 Vec3* out) {
-  scatter_row(op, grad, L, w, M, [out](Index I, const Vec3& c) { out[I] += c; });
-}
-
-template <class Emit>
-void scatter_columns(const GradientOperator& op, Index L, const Emit& emit) {
-  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) emit(op.col[k]);
-  if (op.single_precision()) emit(L);
-}
-
-// F_L in the form the storage needs (see deformation_gradient below).
-// Double storage gathers the positions X + d (formed per entry, the same bits as a
-// stored sum); single storage gathers d in the relative form and adds I.
-template <class Stored>
-Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& X,
-                          const std::vector<Vec3>& d, Index L) {
-  if constexpr (!std::is_same_v<Stored, float>) {
-    const Vec3* Xp = X.data();
-    const Vec3* dp = d.data();
-    return row_gradient_of(op, grad, [Xp, dp](Index I) { return Vec3(Xp[I] + dp[I]); }, L);
-  } else {
-    return Mat3::Identity() + row_gradient(op, grad, d, L);
-  }
-}
-
-// F_L and Grad_X h_L of a per-particle vector field h, one row together (the force pass
-// of a material with a coupled field, such as the LCE's Frank term). In single
-// precision one sweep over the row gathers both (lanes::row_gradients): the row and its
-// columns are read once, and the bits are those of the two gathers apart.
-template <class Stored>
-void deformation_and_field_gradients(const GradientOperator& op, const std::vector<Stored>& grad,
-                                     const std::vector<Vec3>& X, const std::vector<Vec3>& d,
-                                     const std::vector<Vec3>& h, Index L, Mat3& F, Mat3& grad_h) {
-  if constexpr (std::is_same_v<Stored, float>) {
-    const Vec3* dp = d.data();
-    const Vec3* hp = h.data();
-    const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
-    Mat3 grad_u;
-    lanes::row_gradients(
-        op.col.data() + k0, op.planar_row(L), k1 - k0, [dp](Index I) { return dp[I]; }, dp[L], grad_u,
-        [hp](Index I) { return hp[I]; }, hp[L], &grad_h);
-    F = Mat3::Identity() + grad_u;
-  } else {
-    F = deformation_gradient(op, grad, X, d, L);
-    grad_h = row_gradient(op, grad, h, L);
-  }
 }
 
 // sum_I v_I (x) b_I(X_L) over row L: Grad_X h from a per-particle field, dF/dt from velocities,

@@ -21,6 +21,7 @@
 
 #include "rkpm/common/types.hpp"
 #include "rkpm/rk/nodal_integration.hpp"
+#include "rkpm/rk/row_kernels.hpp"
 #include "rkpm/rk/row_scatter.hpp"
 
 #include <vector>
@@ -32,28 +33,6 @@ struct Stabilization {
   RowScatter scatter;          // scratch of add_stabilization_forces (the simulator's force pass has its own)
   bool active() const { return !weight.empty(); }
 };
-
-// r_L = d_L - sum_I Psi_I(X_L) d_I = sum_k psi_k (d_L - d_k) in the relative form of
-// NodalInterpolation: how far d_L is from the field it interpolates, zero for a rigid
-// translation whatever the storage's rounding.
-inline Vec3 interpolation_residual(const NodalInterpolation& N, const std::vector<Vec3>& d, Index L) {
-  const Vec3 dL = d[L];
-  Vec3 r = Vec3::Zero();
-  for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) r += static_cast<double>(N.psi[k]) * (dL - d[N.col[k]]);
-  return r;
-}
-
-// Row L's share of the stabilization force, sink(I, c) in the row's order: the transpose
-// of interpolation_residual applied to wr = W_L r_L, i.e. +(sum_k psi_k) wr at L, then
-// -psi_k wr at each entry's particle. The forces of a row sum to zero.
-template <class Sink>
-void scatter_residual(const NodalInterpolation& N, Index L, const Vec3& wr, const Sink& sink) {
-  const Index k0 = N.row_offset[L], k1 = N.row_offset[L + 1];
-  double sum = 0.0;
-  for (Index k = k0; k < k1; ++k) sum += static_cast<double>(N.psi[k]);
-  sink(L, Vec3(sum * wr));
-  for (Index k = k0; k < k1; ++k) sink(N.col[k], Vec3(-(static_cast<double>(N.psi[k]) * wr)));
-}
 
 // alpha = 0 gives an inactive stabilization. shear_modulus has one entry per particle.
 Stabilization build_stabilization(const std::vector<double>& volume, const std::vector<double>& shear_modulus,

@@ -137,6 +137,12 @@ Vec3 reference_centroid(const Body& body);
 // contributions to their owners; body.force is then complete at the owned particles.
 void compute_internal_forces(Body& body);
 
+// Plans the order of the force pass's scatter for the present thread count (and the
+// body's ranks): called at set-up, once the body's operators and material state exist
+// (the Integrator's constructor); the force pass plans again only when the thread count
+// has changed since, or when no integrator set it up (tests that call it directly).
+void plan_force_scatter(Body& body);
+
 // F at this rank's integration points from the current displacements, and nothing else:
 // a third of a force pass (the gather alone). The Newton-Krylov finish carries the
 // material's state to new coordinates with it before their force pass.

@@ -1,8 +1,22 @@
-// The row kernels of the single-precision gradient operator, on vector registers.
+// The row kernels of the force pass, in one header: what the innermost loop does.
 //
-// Why: the force pass spends most of its time in two loops over each row, the gather
-// F_L = I + sum_k (v_k - v_L) (x) b~_k and the scatter f_k += w M b~_k
-// (rk/nodal_integration.hpp). A 3-vector fills no whole vector register: Eigen packs
+// A step reads each row L of the gradient operator once (sim/body_mechanics.cpp):
+//   gather   F_L = sum_I x_I (x) b_I(X_L)      deformation_gradient (with a coupled
+//                                              field's gradient: deformation_and_field_gradients)
+//   stress   P_L = material.stress(L, F_L)     (the material's own kernel)
+//   scatter  f_I += V_L P_L b_I(X_L)           scatter_row
+// and, when the body is stabilized, row L of the interpolation operator:
+//   r_L = d_L - sum_I Psi_I(X_L) d_I          interpolation_residual
+//   f_L, f_I -= (transpose) W_L r_L            scatter_residual (rk/stabilization.hpp).
+// The kernels are typed by the operator's storage `grad` (op.grad or op.grad_float): a
+// pass over many rows dispatches on the precision once and calls these. Single
+// precision reads its rows through op.planar_row and the lanes kernels below; there
+// `grad` only selects the kernel. The untyped wrappers that dispatch per call are in
+// rk/nodal_integration.hpp.
+//
+// The single-precision kernels run on vector registers (namespace lanes). Why: the
+// force pass spends most of its time in two loops over each row, the gather
+// F_L = I + sum_k (v_k - v_L) (x) b~_k and the scatter f_k += w M b~_k. A 3-vector fills no whole vector register: Eigen packs
 // two components of a Vector3d into an SSE2 register and does the third alone. Here:
 // - the gather keeps v_k - v_L in the first three lanes of a four-lane vector and adds
 //   one entry at a time, in the row's order: each of the nine sums is the sequential
@@ -30,9 +44,11 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
+#include "rkpm/rk/operators.hpp"
 
 #include <cstring>
 #include <type_traits>
+#include <vector>
 
 namespace rkpm::rk::lanes {
 
@@ -190,3 +206,132 @@ void scatter_row(const Index* col, const float* b, Index n, Index L, double w, c
 }
 
 }  // namespace rkpm::rk::lanes
+
+namespace rkpm::rk {
+
+// The row loops below read the operator through raw pointers and accumulate in locals:
+// with the vectors' members and a Mat3 in memory, the compiler must assume each store
+// may alias them and reloads them per entry, extra loads in the innermost loop of the
+// force pass (docs/verification/performance.md measures the pass).
+//
+// value(I) gives the field at particle I: a stored array (row_gradient) or a sum formed
+// on the fly (the positions X_I + d_I, which are not stored).
+template <class Stored, class Value>
+Mat3 row_gradient_of(const GradientOperator& op, const std::vector<Stored>& grad, const Value& value, Index L) {
+  const Index* col = op.col.data();
+  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+  if constexpr (std::is_same_v<Stored, float>) {
+    return lanes::row_gradient(col + k0, op.planar_row(L), k1 - k0, value, value(L));
+  } else {
+    // g = sum_k v_k b_k^T, one column per component of b.
+    const Stored* b = grad.data();
+    Vec3 g0 = Vec3::Zero(), g1 = Vec3::Zero(), g2 = Vec3::Zero();
+    for (Index k = k0; k < k1; ++k) {
+      const Vec3 vk = value(col[k]);
+      g0 += vk * b[k](0);
+      g1 += vk * b[k](1);
+      g2 += vk * b[k](2);
+    }
+    Mat3 g;
+    g << g0, g1, g2;
+    return g;
+  }
+}
+
+template <class Stored>
+Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
+  const Vec3* vp = v.data();
+  return row_gradient_of(op, grad, [vp](Index I) { return vp[I]; }, L);
+}
+
+// Row L's contributions w M b_I(X_L), handed to add(I, c) in the row's order: its
+// entries, then (single precision) the own-particle correction at L.
+// `scatter_columns` names the same columns in the same order (an ordered
+// rk::RowScatter plans with it).
+template <class Stored, class Add>
+void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M_in,
+                 const Add& add) {
+  const Mat3 M = M_in;
+  const Index* col = op.col.data();
+  const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+  if constexpr (std::is_same_v<Stored, float>) {
+    lanes::scatter_row(col + k0, op.planar_row(L), k1 - k0, L, w, M, add);
+  } else {
+    const Stored* b = grad.data();
+    for (Index k = k0; k < k1; ++k) add(col[k], Vec3(w * (M * b[k])));
+  }
+}
+
+template <class Stored>
+void scatter_row(const GradientOperator& op, const std::vector<Stored>& grad, Index L, double w, const Mat3& M,
+                 Vec3* out) {
+  scatter_row(op, grad, L, w, M, [out](Index I, const Vec3& c) { out[I] += c; });
+}
+
+template <class Emit>
+void scatter_columns(const GradientOperator& op, Index L, const Emit& emit) {
+  for (Index k = op.row_offset[L]; k < op.row_offset[L + 1]; ++k) emit(op.col[k]);
+  if (op.single_precision()) emit(L);
+}
+
+// F_L in the form the storage needs (see deformation_gradient below).
+// Double storage gathers the positions X + d (formed per entry, the same bits as a
+// stored sum); single storage gathers d in the relative form and adds I.
+template <class Stored>
+Mat3 deformation_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& X,
+                          const std::vector<Vec3>& d, Index L) {
+  if constexpr (!std::is_same_v<Stored, float>) {
+    const Vec3* Xp = X.data();
+    const Vec3* dp = d.data();
+    return row_gradient_of(op, grad, [Xp, dp](Index I) { return Vec3(Xp[I] + dp[I]); }, L);
+  } else {
+    return Mat3::Identity() + row_gradient(op, grad, d, L);
+  }
+}
+
+// F_L and Grad_X h_L of a per-particle vector field h, one row together (the force pass
+// of a material with a coupled field, such as the LCE's Frank term). In single
+// precision one sweep over the row gathers both (lanes::row_gradients): the row and its
+// columns are read once, and the bits are those of the two gathers apart.
+template <class Stored>
+void deformation_and_field_gradients(const GradientOperator& op, const std::vector<Stored>& grad,
+                                     const std::vector<Vec3>& X, const std::vector<Vec3>& d,
+                                     const std::vector<Vec3>& h, Index L, Mat3& F, Mat3& grad_h) {
+  if constexpr (std::is_same_v<Stored, float>) {
+    const Vec3* dp = d.data();
+    const Vec3* hp = h.data();
+    const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
+    Mat3 grad_u;
+    lanes::row_gradients(
+        op.col.data() + k0, op.planar_row(L), k1 - k0, [dp](Index I) { return dp[I]; }, dp[L], grad_u,
+        [hp](Index I) { return hp[I]; }, hp[L], &grad_h);
+    F = Mat3::Identity() + grad_u;
+  } else {
+    F = deformation_gradient(op, grad, X, d, L);
+    grad_h = row_gradient(op, grad, h, L);
+  }
+}
+
+// r_L = d_L - sum_I Psi_I(X_L) d_I = sum_k psi_k (d_L - d_k) in the relative form of
+// NodalInterpolation: how far d_L is from the field it interpolates, zero for a rigid
+// translation whatever the storage's rounding.
+inline Vec3 interpolation_residual(const NodalInterpolation& N, const std::vector<Vec3>& d, Index L) {
+  const Vec3 dL = d[L];
+  Vec3 r = Vec3::Zero();
+  for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) r += static_cast<double>(N.psi[k]) * (dL - d[N.col[k]]);
+  return r;
+}
+
+// Row L's share of the stabilization force, sink(I, c) in the row's order: the transpose
+// of interpolation_residual applied to wr = W_L r_L, i.e. +(sum_k psi_k) wr at L, then
+// -psi_k wr at each entry's particle. The forces of a row sum to zero.
+template <class Sink>
+void scatter_residual(const NodalInterpolation& N, Index L, const Vec3& wr, const Sink& sink) {
+  const Index k0 = N.row_offset[L], k1 = N.row_offset[L + 1];
+  double sum = 0.0;
+  for (Index k = k0; k < k1; ++k) sum += static_cast<double>(N.psi[k]);
+  sink(L, Vec3(sum * wr));
+  for (Index k = k0; k < k1; ++k) sink(N.col[k], Vec3(-(static_cast<double>(N.psi[k]) * wr)));
+}
+
+}  // namespace rkpm::rk
