@@ -69,7 +69,7 @@ Functions for the project's shapes: `profile_measures` (a generating curve as (r
 points), `thickness_profile_measures` (a thickness profile h(r) of a shape symmetric
 about z = 0, the format of the project's shape_profile.csv, scripts/lib/rbc_profile.py)
 and the Evans-Fung red blood cell (`evans_fung_thickness`, `evans_fung_curve`,
-`evans_fung_measures`, with the coefficients of src/sim/shape_report.cpp).
+`evans_fung_measures`, with the coefficients of src/sim/run/shape_report.cpp).
 """
 from dataclasses import dataclass, field
 
@@ -455,7 +455,7 @@ def thickness_measures(r, z):
     pole, densely sampled): h(r) is the length of the vertical line at radius r inside
     the shape (for a shape symmetric about z = 0, twice the height of its upper face),
     h_min = h(0), h_max its largest value, R the shape's largest radius: what rkpm's
-    shape report measures in radial bins (src/sim/shape_report.cpp), here on the
+    shape report measures in radial bins (src/sim/run/shape_report.cpp), here on the
     continuous curve (linear between the points)."""
     r = np.asarray(r, float)
     z = np.asarray(z, float)
@@ -555,7 +555,7 @@ def thickness_profile_measures(r, h, R, c0=0.0):
 
 # Evans & Fung, Microvasc. Res. 4, 335 (1972): the thickness of a red blood cell of
 # diameter 7.82 um, h(x) = sqrt(1 - x^2) (0.81 + 7.83 x^2 - 4.39 x^4) um, x = 2 r / D,
-# scaled with D; the coefficients rkpm's shape report uses (src/sim/shape_report.cpp).
+# scaled with D; the coefficients rkpm's shape report uses (src/sim/run/shape_report.cpp).
 EVANS_FUNG_D_UM = 7.82
 EVANS_FUNG_UM = (0.81, 7.83, -4.39)
 

@@ -5,7 +5,7 @@
 // nothing; a stateful model overrides the ones it needs (by name: the calls are resolved
 // at compile time through sim::Material's std::visit, not virtual).
 //
-// The order in which a step calls them (sim/integrator.cpp):
+// The order in which a step calls them (sim/integration/integrator.cpp):
 //   begin_step          before the step moves the body (hold what the update measures from)
 //   [kick, drift, force pass: stress(L, F) with the state held fixed]
 //   [second kick; FIRE in a relaxation]

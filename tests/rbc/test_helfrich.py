@@ -40,7 +40,7 @@ def spheroid_area(q):
     return 2.0 * np.pi * (1.0 + q / e * np.arcsin(e))
 
 
-# Evans-Fung in units of um for D = 7.82 um, the coefficients of src/sim/shape_report.cpp
+# Evans-Fung in units of um for D = 7.82 um, the coefficients of src/sim/run/shape_report.cpp
 # (written out again here, so that a typo in the module's copy shows).
 EF_D = 7.82
 EF_C = (0.81, 7.83, -4.39)

@@ -15,7 +15,7 @@
 // A step then computes F_L = sum_I x_I (x) b_I(X_L) (a gather over row L) and the
 // internal force f_I = sum_L V_L P_L b_I(X_L) (a scatter from the same row, into
 // per-thread buffers: rkpm/rk/row_scatter.hpp): no atomics. The simulator fuses both
-// into one pass over the operator (sim/body_mechanics.cpp) with the row kernels of
+// into one pass over the operator (sim/mechanics/body_mechanics.cpp) with the row kernels of
 // rk/row_kernels.hpp; the untyped functions below dispatch the precision per call, for
 // tests, studies and the per-point values outside the force pass.
 #pragma once

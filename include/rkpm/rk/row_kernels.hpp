@@ -1,6 +1,6 @@
 // The row kernels of the force pass, in one header: what the innermost loop does.
 //
-// A step reads each row L of the gradient operator once (sim/body_mechanics.cpp):
+// A step reads each row L of the gradient operator once (sim/mechanics/body_mechanics.cpp):
 //   gather   F_L = sum_I x_I (x) b_I(X_L)      deformation_gradient (with a coupled
 //                                              field's gradient: deformation_and_field_gradients)
 //   stress   P_L = material.stress(L, F_L)     (the material's own kernel)

@@ -1,3 +1,7 @@
+// The integrator's stages (rkpm/sim/integrator.hpp): set-up, the step as its list of
+// stages (kick, drift, forces, kick, FIRE, the materials' state), the Newton-Krylov
+// finish and the checkpointed state. Its step size, ledger and checks have files of
+// their own (integrator_step_size.cpp, integrator_ledger.cpp, integrator_checks.cpp).
 #include "rkpm/sim/integrator.hpp"
 
 #include "rkpm/sim/body_state.hpp"
@@ -23,52 +27,8 @@ double body_volume(const World& world, const Body& body) {
 
 }  // namespace
 
-double EnergyLedger::relative_error() const {
-  const double balance = total() - (initial + external + active + state - dissipated);
-  const double scale = std::max({std::abs(initial), std::abs(kinetic), std::abs(strain), std::abs(interface),
-                                 std::abs(external), std::abs(active), std::abs(state), std::abs(dissipated),
-                                 std::numeric_limits<double>::min()});
-  return std::abs(balance) / scale;
-}
-
 Integrator::Integrator(World& world, IntegratorSettings settings)
     : world_(world), settings_(settings), fire_(settings.fire) {}
-
-// The smallest wave-speed step spacing / c over the bodies at the current state.
-double Integrator::bodies_wave_dt() const {
-  double dt = std::numeric_limits<double>::infinity();
-  for (const auto& b : world_.bodies) dt = std::min(dt, material_stable_dt(*b));
-  return world_.comm->min(dt);
-}
-
-// The bodies' wave-speed step times the calibration (1 unless the step is measured),
-// each term's own limit, and the material states' (state_stable_dt): the calibration is
-// measured on the bodies' material stiffness together with whatever the terms add at
-// that state, but a term that stiffens later (a contact that closes) keeps the limit
-// it states, and a state's first-order relaxation (an LCE director's, Eq. 5) is not a
-// vibration the calibration sees.
-double Integrator::estimate_stable_dt() const {
-  double dt = calibration_ * bodies_wave_dt();
-  for (const auto& t : world_.terms) dt = std::min(dt, t->stable_dt(world_));
-  double state_dt = std::numeric_limits<double>::infinity();
-  for (const auto& b : world_.bodies) state_dt = std::min(state_dt, state_stable_dt(*b));
-  return std::min(dt, world_.comm->min(state_dt));
-}
-
-// The measured stable step 2 / omega_max (stable_step.hpp) over the wave-speed step at
-// the same state. The wave-speed step follows the state between calibrations (it
-// tracks the stiffening of the material with F); the ratio carries what the wave speed
-// misses: the discretisation's softer shortest modes, and the stiffness the terms add
-// (a volume constraint states no limit of its own). A ratio below 1 is kept too: the
-// measurement is then the safer bound. An iteration that finds no positive stiffness
-// leaves the calibration as it was.
-void Integrator::calibrate_stable_step() {
-  const FrequencyEstimate f = largest_frequency(world_);
-  ++calibrations_;
-  force_evaluations_ += f.iterations + 2;  // and the state's own forces, before and after
-  const double wave = bodies_wave_dt();
-  if (f.omega_max > 0.0 && std::isfinite(wave)) calibration_ = 2.0 / f.omega_max / wave;
-}
 
 // Forces at the new positions (the bodies' internal forces, then every term's) and the
 // essential boundary conditions by the transformation method (its reactions' power
@@ -80,32 +40,6 @@ void Integrator::evaluate_forces() {
   support_power_ = 0.0;
   for (auto& bp : world_.bodies) support_power_ += bp->constraints.transform_forces(bp->force);
   term_power_ = power_of_terms();
-}
-
-// The stored energy an update changed, over every rank: the exact sums merged, then
-// differenced (the same bits on any rank count).
-double Integrator::state_energy_change(const materials::StateUpdate& update) const {
-  return world_.comm->sum(update.energy_after) - world_.comm->sum(update.energy_before);
-}
-
-double Integrator::power_of_terms() const {
-  double p = 0.0;
-  for (const auto& t : world_.terms) p += t->power(world_);
-  return p;
-}
-
-double Integrator::stored_energy() {
-  ledger_.strain = 0.0;
-  for (const auto& b : world_.bodies) ledger_.strain += world_.comm->sum(strain_energy(*b));
-  ledger_.interface = 0.0;
-  for (const auto& t : world_.terms) ledger_.interface += t->stored_energy(world_);
-  return ledger_.strain + ledger_.interface;
-}
-
-const EnergyLedger& Integrator::measure_energy() {
-  ledger_.kinetic = kinetic_energy(world_);
-  stored_energy();
-  return ledger_;
 }
 
 void Integrator::initialize() {
@@ -167,42 +101,6 @@ void Integrator::initialize() {
     reference_energy_ += body_shear_modulus_.back() * body_volume(world_, *bp);
   }
   update_convergence(kinetic_energy(world_));
-}
-
-// contact_mass_scaling: a stiff contact would hold the whole relaxation at its own
-// step (its Gershgorin bound); its particles get heavier instead, until its limit
-// reaches about the bodies' own step. The equilibrium does not depend on the masses.
-// The velocities are kept, so the kinetic energy grows with the inertia; the ledger
-// books that growth as negative dissipation (FIRE, the run's one sink, removes it
-// again), and its balance holds.
-void Integrator::scale_inertia_for_terms() {
-  if (settings_.mode != Mode::Relax || !settings_.contact_mass_scaling) return;
-  const double bodies_dt = calibration_ * bodies_wave_dt();
-  const double kinetic_before = kinetic_energy(world_);
-  for (auto& t : world_.terms) t->scale_inertia_to(world_, bodies_dt);
-  ledger_.dissipated -= kinetic_energy(world_) - kinetic_before;
-}
-
-// Mass scaling for relaxation: the target is the median of every particle's own wave step
-// at the start, so at most half the particles get heavier and the step is no longer set
-// by the few shortest edges (a shell's tightly curved rim, a cubed sphere's corners).
-// The median of an even count is the upper middle value: deterministic, no averaging.
-void Integrator::scale_masses() {
-  std::vector<std::vector<double>> steps(world_.bodies.size());
-  std::vector<double> all;
-  for (std::size_t b = 0; b < steps.size(); ++b) {
-    const Body& body = *world_.bodies[b];
-    particle_wave_steps(body, steps[b]);
-    // Distributed: a rank knows the steps of its own particles (it holds their F); every
-    // rank gathers them all, so that the median and the inertia of every particle,
-    // ghosts included, are those of one process.
-    steps[b] = par::gather_owned(*world_.comm, steps[b], body.owned_begin(), body.owned_end());
-    all.insert(all.end(), steps[b].begin(), steps[b].end());
-  }
-  if (all.empty()) return;
-  const auto middle = all.begin() + static_cast<std::ptrdiff_t>(all.size() / 2);
-  std::nth_element(all.begin(), middle, all.end());
-  for (std::size_t b = 0; b < steps.size(); ++b) scale_inertia(*world_.bodies[b], *middle, steps[b]);
 }
 
 // One step of velocity Verlet (the central-difference scheme with lumped masses) with
@@ -398,166 +296,6 @@ void Integrator::advance_states(StepBook& book) {
       book.active_work += world_.comm->sum(d.active_work);
       book.state_energy.push_back(state_energy_change(d));
     }
-}
-
-// The energy ledger: the work of the terms and of the moving supports by the trapezoidal
-// rule over the step, the materials' active work (trapezoidal in F, end_state_step),
-// their states' energy change, and the dissipation by FIRE and by damping.
-void Integrator::ledger(const StepBook& book) {
-  const double h = book.h;
-  term_power_ = power_of_terms();
-  if (settings_.mode == Mode::Relax) ledger_.dissipated += book.fire_dissipated;
-  for (double e : book.state_energy) ledger_.state += e;
-  ledger_.external += 0.5 * h * (book.old_term_power + term_power_) + h * support_power_;
-  ledger_.active += book.active_work;
-  ledger_.dissipated += h * book.damping_power;
-}
-
-// Blow-up (throws BlowUp with the diagnosis), then the relaxation measures.
-void Integrator::check(double kinetic_of_motion) {
-  check_state();
-  update_convergence(kinetic_of_motion);
-}
-
-// The stable step follows the state (stiffening, contact): it is re-estimated every
-// stable_step_interval steps (10 by default; 1 for releases from large strain,
-// docs/verification/stability.md). Three cases: a user step is kept while it stays below the
-// estimate (as at the start) and, once clamped, the run follows the automatic step; a dynamic run (or a
-// clamped one) takes the automatic step; FIRE grows its step by itself, up to the
-// automatic step as a ceiling.
-void Integrator::step_size_policy() {
-  if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
-  if (world_.step % settings_.stable_step_interval != 0) return;
-  // The first estimate at or after each multiple of kCalibrateEvery calibrates, whatever
-  // the interval (with 10 exactly at the multiples).
-  if (settings_.measured_stable_step && world_.step % kCalibrateEvery < settings_.stable_step_interval)
-    calibrate_stable_step();
-  scale_inertia_for_terms();
-  stable_dt_ = estimate_stable_dt();
-  const double automatic = settings_.dt_safety * stable_dt_;
-  if (settings_.dt > 0.0 && !dt_clamped_) {
-    if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
-      dt_ = automatic;
-      dt_clamped_ = true;
-    }
-  } else if (settings_.mode == Mode::Dynamic || dt_clamped_) {
-    dt_ = automatic;
-  } else {
-    dt_ = std::min(dt_, automatic);
-  }
-}
-
-// A release from a large strain accelerates particles so hard that they cross their
-// neighbours within one step at the stable step, which is a bound for small motions
-// (docs/verification/stability.md). Per particle, the step of the displacement |v| dt + |a| dt^2 / 2
-// = kappa h is the positive root 2 kappa h / (|v| + sqrt(|v|^2 + 2 |a| kappa h)); the
-// smallest over the particles, evaluated every step, because the motion changes faster
-// than the material's stiffness.
-double Integrator::motion_limited_dt() const {
-  double dt = std::numeric_limits<double>::infinity();
-  for (const auto& bp : world_.bodies) {
-    const Body& b = *bp;
-#pragma omp parallel for schedule(static) reduction(min : dt)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
-      const double reach = kMotionFraction * b.spacing[i];
-      const double v = b.v[i].norm(), a = acceleration(b, i).norm();
-      const double speed = v + std::sqrt(v * v + 2.0 * a * reach);
-      if (speed > 0.0) dt = std::min(dt, 2.0 * reach / speed);
-    }
-  }
-  return world_.comm->min(dt);
-}
-
-// Dynamic runs take the policy's step or the motion limit, the smaller; a testing run
-// that allows unstable steps keeps its step as given.
-double Integrator::mode_step_limit() const {
-  if (settings_.mode != Mode::Dynamic || settings_.allow_unstable_dt) return dt_;
-  return std::min(dt_, motion_dt_);
-}
-
-// The kinetic measure is taken from the velocities the step produced, before FIRE mixes
-// or stops them: a FIRE stop (P <= 0) zeroes every velocity, and measured after it the
-// kinetic criterion would hold at every stop, so a run creeping along a soft mode would
-// be declared converged at the first stop where the residual happens to be below its
-// tolerance (docs/theory/relaxation.md, "When the run stops").
-void Integrator::update_convergence(double kinetic_of_motion) {
-  double residual = 0.0;
-  for (std::size_t k = 0; k < world_.bodies.size(); ++k) {
-    const Body& b = *world_.bodies[k];
-    const double mu = body_shear_modulus_[k];
-#pragma omp parallel for schedule(static) reduction(max : residual)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
-      residual = std::max(residual, b.force[i].norm() / (mu * std::cbrt(b.cloud.volume[i] * b.cloud.volume[i])));
-  }
-  residual_ = world_.comm->max(residual);
-  kinetic_measure_ = kinetic_of_motion / reference_energy_;
-  // A pass over the particles every step, only when the scene asks for the materials'
-  // state in the stop.
-  if (settings_.relax_state_tol > 0.0) state_measure_ = state_residual();
-}
-
-double Integrator::state_residual() const {
-  double largest = 0.0;
-  for (const auto& b : world_.bodies) largest = std::max(largest, sim::state_residual(*b));
-  return world_.comm->max(largest);
-}
-
-bool Integrator::converged() const {
-  if (!(residual_ < settings_.relax_force_tol && kinetic_measure_ < settings_.relax_velocity_tol)) return false;
-  return !(settings_.relax_state_tol > 0.0) || state_measure_ < settings_.relax_state_tol;
-}
-
-// Every rank checks its own particles; the lowest rank that finds a failure states the
-// diagnosis and every rank throws it (one voice, the same exit on every rank).
-void Integrator::check_state() {
-  enum Reason { None = 0, NonFinitePosition, NonFiniteVelocity, NonFiniteForce, Inverted, Runaway };
-  const double limit2 = settings_.domain_size * settings_.domain_size;
-  double min_J = std::numeric_limits<double>::infinity();
-  std::string diagnosis;
-  for (const auto& bp : world_.bodies) {
-    const Body& b = *bp;
-    Index first = std::numeric_limits<Index>::max();
-#pragma omp parallel for schedule(static) reduction(min : first, min_J)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) {
-      const double J = b.F[i].determinant();
-      min_J = std::min(min_J, J);
-      const Vec3 x = nodal_position(b, i);
-      // A force that overflowed (an extreme modulus, activity or load) is caught here,
-      // before it reaches a position or any output.
-      const bool bad = !x.allFinite() || !b.v[i].allFinite() || !b.force[i].allFinite() || !(J > 0.0) ||
-                       (x - centre_).squaredNorm() > limit2;
-      if (bad) first = std::min(first, i);
-    }
-    if (first == std::numeric_limits<Index>::max()) continue;
-    const double J = b.F[first].determinant();
-    const Vec3 x = nodal_position(b, first);
-    const Reason why = !x.allFinite()                ? NonFinitePosition
-                       : !b.v[first].allFinite()     ? NonFiniteVelocity
-                       : !b.force[first].allFinite() ? NonFiniteForce
-                       : !(J > 0.0)                  ? Inverted
-                                                     : Runaway;
-    const char* what[] = {"", "position is not finite", "velocity is not finite",
-                          "the force is not finite (it overflowed: an extreme modulus, activity, load or state)",
-                          "the deformation gradient is inverted or degenerate (J <= 0 or NaN)",
-                          "the particle left the domain (runaway motion)"};
-    const Vec3 X = b.cloud.X[first];
-    // The particle's id in a one-rank run of the scene, whatever the rank count.
-    const std::int64_t id = b.original_id.empty() ? first : b.original_id[static_cast<std::size_t>(first)];
-    diagnosis = fmt::format(
-        "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
-        "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "
-        "The stable step estimate is {:.3g} s.",
-        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), what[why], J, b.v[first].norm(), stable_dt_);
-    break;
-  }
-  diagnosis = world_.comm->first_error(diagnosis);
-  for (const auto& term : world_.terms) {
-    if (!diagnosis.empty()) break;
-    if (const std::string broken = term->diagnose(world_); !broken.empty())
-      diagnosis = fmt::format("stopped at step {} (t = {:.6g} s): {}", world_.step, world_.time, broken);
-  }
-  if (!diagnosis.empty()) throw BlowUp(diagnosis);
-  min_J_ = world_.comm->min(min_J);
 }
 
 StateRecord Integrator::save_state() const {

@@ -1,5 +1,8 @@
 #include "rkpm/sim/run.hpp"
 
+#include "sim/run/collective_output.hpp"
+#include "sim/run/summary.hpp"
+
 #include "rkpm/io/json.hpp"
 #include "rkpm/io/progress.hpp"
 #include "rkpm/io/pvd_series.hpp"
@@ -25,89 +28,6 @@ namespace rkpm::sim {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// A write of the run's output failed (the folder, a frame, history.csv, a checkpoint).
-struct OutputFailed : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// Runs `write` (on every rank) and agrees on the outcome: a failure on any rank ends the
-// output on every rank with the lowest failing rank's message (one voice), as the
-// failure it was: a non-finite value found in a frame's data is the simulation's
-// failure and passes as NonFiniteValue; anything else is the disk's, OutputFailed.
-template <class Write>
-void collective_output(const par::Comm& comm, Write&& write) {
-  std::int64_t kind = 0;  // 1: a non-finite value, 2: an output failure
-  std::string message;
-  try {
-    write();
-  } catch (const io::NonFiniteValue& e) {
-    kind = 1;
-    message = e.what();
-  } catch (const std::exception& e) {
-    kind = 2;
-    message = e.what();
-  }
-  if (!comm.parallel()) {
-    if (kind == 1) throw io::NonFiniteValue(message);
-    if (kind == 2) throw OutputFailed(message);
-    return;
-  }
-  const auto kinds = comm.gather(kind);
-  for (std::size_t r = 0; r < kinds.size(); ++r) {
-    if (kinds[r] == 0) continue;
-    const std::string text = fmt::format("rank {}: {}", r, comm.broadcast(message, static_cast<int>(r)));
-    if (kinds[r] == 1) throw io::NonFiniteValue(text);
-    throw OutputFailed(text);
-  }
-}
-
-// A checkpoint file of this rank: the name itself on one rank, `<name>.<rank>` on more.
-std::filesystem::path rank_file(const std::filesystem::path& path, const par::Comm& comm) {
-  if (!comm.parallel()) return path;
-  return path.string() + "." + std::to_string(comm.rank());
-}
-
-// Per body and rank: the particles owned, the ghosts held, and the doubles a force
-// evaluation exchanges (each ghost's displacement in, and out the force contributions
-// the rank's rows make to its ghosts, one record each: rk/row_scatter.hpp).
-// Collective: every rank calls it.
-io::Json distribution_json(const World& world) {
-  const par::Comm& comm = *world.comm;
-  io::Json bodies = io::Json::array();
-  for (const auto& b : world.bodies) {
-    const auto owned = comm.gather(static_cast<std::int64_t>(b->owned_end() - b->owned_begin()));
-    const auto ghosts = comm.gather(static_cast<std::int64_t>(b->ghosts.ghost_count()));
-    const auto records = comm.gather(static_cast<std::int64_t>(b->force_scatter.records_sent()));
-    io::Json j = io::Json::object();
-    j.set("body", b->name);
-    io::Json o = io::Json::array(), g = io::Json::array(), v = io::Json::array();
-    for (std::size_t r = 0; r < owned.size(); ++r) {
-      o.push_back(owned[r]);
-      g.push_back(ghosts[r]);
-      v.push_back(3 * ghosts[r] + 3 * records[r]);
-    }
-    j.set("owned", std::move(o));
-    j.set("ghosts", std::move(g));
-    j.set("doubles_received_and_returned_per_force_evaluation", std::move(v));
-    bodies.push_back(std::move(j));
-  }
-  return bodies;
-}
-
-io::Json energy_json(const EnergyLedger& e) {
-  io::Json j = io::Json::object();
-  j.set("kinetic", e.kinetic);
-  j.set("strain", e.strain);
-  j.set("interface", e.interface);
-  j.set("external_work", e.external);
-  j.set("active_work", e.active);
-  j.set("state_work", e.state);
-  j.set("dissipated", e.dissipated);
-  j.set("initial", e.initial);
-  j.set("relative_error", e.relative_error());
-  return j;
-}
 
 // The relaxation's two criteria on the progress line: a run whose residual is already
 // below its target keeps going while the kinetic energy is not (a shape still creeping
@@ -386,74 +306,10 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   if (!options.quiet) progress.finish();
 
-  io::RunSummary summary;
-  summary.scene = scene.file;
-  for (const auto& b : world->bodies) summary.particle_counts.emplace_back(b->name, static_cast<std::int64_t>(b->size()));
-  summary.steps = world->step;
-  summary.simulated_time = world->time;
-  summary.wall_time = elapsed();
-  summary.frames_written = series->frames_written();
-  summary.status = status;
-  io::Json json = io::to_json(summary);
-  json.set("threads", rk::RowScatter::team_threads());
-  json.set("ranks", comm.size());
-  if (comm.parallel()) json.set("distribution", distribution_json(*world));
-  json.set("dt", integrator.dt());
-  json.set("stable_dt", integrator.stable_dt());
-  json.set("force_evaluations", integrator.force_evaluations());
-  if (!relax) json.set("motion_limited_steps", integrator.motion_limited_steps());
-  if (relax) json.set("fire_step_backs", integrator.step_backs());
-  if (integrator.measures_stable_step()) {
-    json.set("stable_step_calibration", integrator.stable_step_calibration());
-    json.set("stable_step_calibrations", integrator.calibrations());
-  }
-  json.set("pvd", series->pvd_path().string());
-  if (!levels.empty()) {
-    io::Json list = io::Json::array();
-    for (const LevelRun& l : levels) {
-      io::Json j = io::Json::object();
-      j.set("factor", l.factor);
-      j.set("particles", static_cast<std::int64_t>(l.particles));
-      j.set("steps", l.steps);
-      j.set("force_evaluations", l.force_evaluations);
-      j.set("wall_time", l.wall_time);
-      j.set("residual", l.residual);
-      j.set("converged", l.converged);
-      j.set("transfer_sweeps", static_cast<std::int64_t>(l.transfer_sweeps));
-      j.set("transfer_mismatch", l.transfer_mismatch);
-      list.push_back(std::move(j));
-    }
-    json.set("nested_levels", std::move(list));
-  }
-  if (finish) {
-    io::Json j = io::Json::object();
-    j.set("converged", finish->converged);
-    j.set("stop", finish->stop);
-    j.set("newton_steps", static_cast<std::int64_t>(finish->newton_steps));
-    j.set("krylov_iterations", finish->krylov_iterations);
-    j.set("force_evaluations", finish->force_evaluations);
-    j.set("residual", finish->residual);
-    io::Json residuals = io::Json::array();
-    for (double r : finish->residuals) residuals.push_back(r);
-    j.set("residual_after_each_newton_step", std::move(residuals));
-    json.set("newton_krylov", std::move(j));
-  }
-  if (code != kUnstable && code != kOutputFailed) {
-    json.set("energy", energy_json(integrator.measure_energy()));
-    json.set("min_J", integrator.min_J());
-    if (relax) {
-      json.set("converged", integrator.converged() && (!finish || finish->converged));
-      json.set("residual", integrator.residual());
-      json.set("kinetic_measure", integrator.kinetic_measure());
-      json.set("state_residual", integrator.state_residual());
-    }
-    for (const auto& t : world->terms) t->report(*world, json);
-    if (shape_body) {
-      const ShapeReport shape = final_shape(*shape_body, comm);  // collective
-      if (comm.root()) write_shape(shape, options.out_dir / "shape_profile.csv", json);
-    }
-  } else {
-    json.set("diagnosis", diagnosis);
+  const RunOutcome outcome{status, code, diagnosis, elapsed(), static_cast<std::int64_t>(series->frames_written()),
+                           series->pvd_path()};
+  io::Json json = run_summary(scene, *world, integrator, relax, levels, finish, outcome, shape_body, options.out_dir);
+  if (code == kUnstable || code == kOutputFailed) {
     log << "error: " << diagnosis << "\n";
     log << fmt::format(code == kUnstable ? "the last good frame is kept in {}" : "the frames listed in {} are complete",
                        series->pvd_path().string());
@@ -472,7 +328,7 @@ int run_scene(const scene::Scene& scene, const RunOptions& options, std::ostream
   }
   if (code == kSuccess || code == kIncomplete)
     log << fmt::format("{} after {} steps, t = {:.6g} s, {:.1f} s wall. ParaView: {}\n", status, world->step,
-                       world->time, summary.wall_time, series->pvd_path().string());
+                       world->time, outcome.wall_time, series->pvd_path().string());
   if (options.keep) {
     options.keep->world = std::move(world);
     options.keep->integrator = std::move(integrator_owner);
