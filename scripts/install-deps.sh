@@ -29,6 +29,7 @@ packages=(
   libopenmpi-dev openmpi-bin       # OpenMPI 4.1: distributed runs (mpirun), the 2-rank tests
   libmetis-dev                     # METIS 5.1: partition of the bodies over the ranks
   libfmt-dev                       # fmt: messages
+  nlohmann-json3-dev               # nlohmann/json 3.11: summary.json
   libgtest-dev                     # GoogleTest: the test suite
   libbenchmark-dev                 # Google Benchmark: bench/
   gnuplot-nox                      # PNG plots of the studies

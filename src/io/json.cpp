@@ -3,9 +3,12 @@
 #include "rkpm/io/atomic_file.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 namespace rkpm::io {
 
@@ -31,82 +34,48 @@ Json& Json::push_back(Json value) {
   return *this;
 }
 
-std::string json_quote(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      case '\b': out += "\\b"; break;
-      case '\f': out += "\\f"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          out += fmt::format("\\u{:04x}", static_cast<unsigned>(static_cast<unsigned char>(c)));
-        } else {
-          out += c;
-        }
-    }
-  }
-  out += '"';
-  return out;
-}
-
 namespace {
 
-void newline(std::string& out, int indent, int depth) {
-  if (indent <= 0) return;
-  out += '\n';
-  out.append(static_cast<std::size_t>(indent * depth), ' ');
+// Invalid UTF-8 in a string (a scene name, a path) is written as U+FFFD rather than
+// refused: a summary must be written whatever the input's bytes.
+constexpr auto kInvalidUtf8 = nlohmann::ordered_json::error_handler_t::replace;
+
+// The library's tree of the value, objects in insertion order. Throws
+// std::invalid_argument naming the key path at a NaN or infinity, which the library
+// would write as null.
+nlohmann::ordered_json library_tree(const Json::Value& value, const std::string& path) {
+  const std::string where = path.empty() ? "(top level)" : path;
+  return std::visit(
+      [&](const auto& v) -> nlohmann::ordered_json {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, double>) {
+          if (!std::isfinite(v))
+            throw std::invalid_argument(
+                fmt::format("JSON value at '{}' is {}; only finite numbers can be written", where, v));
+          return v;
+        } else if constexpr (std::is_same_v<T, Json::Array>) {
+          nlohmann::ordered_json a = nlohmann::ordered_json::array();
+          for (std::size_t k = 0; k < v.size(); ++k) a.push_back(library_tree(v[k].value(), fmt::format("{}[{}]", path, k)));
+          return a;
+        } else if constexpr (std::is_same_v<T, Json::Object>) {
+          nlohmann::ordered_json o = nlohmann::ordered_json::object();
+          for (const auto& [key, member] : v) o[key] = library_tree(member.value(), path.empty() ? key : path + "." + key);
+          return o;
+        } else {
+          return v;
+        }
+      },
+      value);
 }
 
 }  // namespace
 
-void Json::dump_to(std::string& out, int indent, int depth, const std::string& path) const {
-  const std::string where = path.empty() ? "(top level)" : path;
-  if (std::holds_alternative<std::nullptr_t>(value_)) {
-    out += "null";
-  } else if (const bool* b = std::get_if<bool>(&value_)) {
-    out += *b ? "true" : "false";
-  } else if (const std::int64_t* i = std::get_if<std::int64_t>(&value_)) {
-    out += fmt::format("{}", *i);
-  } else if (const double* x = std::get_if<double>(&value_)) {
-    if (!std::isfinite(*x)) {
-      throw std::invalid_argument(fmt::format("JSON value at '{}' is {}; only finite numbers can be written", where, *x));
-    }
-    out += fmt::format("{}", *x);  // shortest round-trip representation, locale-independent
-  } else if (const std::string* s = std::get_if<std::string>(&value_)) {
-    out += json_quote(*s);
-  } else if (const Array* a = std::get_if<Array>(&value_)) {
-    out += '[';
-    for (std::size_t k = 0; k < a->size(); ++k) {
-      if (k > 0) out += ',';
-      newline(out, indent, depth + 1);
-      (*a)[k].dump_to(out, indent, depth + 1, fmt::format("{}[{}]", path, k));
-    }
-    if (!a->empty()) newline(out, indent, depth);
-    out += ']';
-  } else {
-    const Object& o = std::get<Object>(value_);
-    out += '{';
-    for (std::size_t k = 0; k < o.size(); ++k) {
-      if (k > 0) out += ',';
-      newline(out, indent, depth + 1);
-      out += json_quote(o[k].first);
-      out += indent > 0 ? ": " : ":";
-      o[k].second.dump_to(out, indent, depth + 1, path.empty() ? o[k].first : path + "." + o[k].first);
-    }
-    if (!o.empty()) newline(out, indent, depth);
-    out += '}';
-  }
-}
+std::string json_quote(const std::string& s) { return nlohmann::ordered_json(s).dump(-1, ' ', false, kInvalidUtf8); }
 
 std::string Json::dump(int indent) const {
-  std::string out;
-  dump_to(out, indent, 0, "");
-  return out;
+  // The library writes integers as they are and doubles as the shortest text that reads
+  // back to the same bits; indent <= 0 is one line.
+  return library_tree(value_, "").dump(indent > 0 ? indent : -1, ' ', false, kInvalidUtf8);
 }
 
 void write_json_atomically(const std::filesystem::path& path, const Json& value, int indent) {

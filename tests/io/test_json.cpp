@@ -1,5 +1,5 @@
-// summary.json: the text must be valid JSON (checked by a small strict parser
-// written here, independent of the writer), numbers must read back exactly,
+// summary.json (written through nlohmann/json): the text must be valid JSON (checked
+// by a small strict parser written here, independent of the writer), numbers must read back exactly,
 // strings must be escaped, and non-finite numbers must be refused.
 #include "io_test_support.hpp"
 
@@ -196,6 +196,17 @@ TEST(Json, StringsAreEscaped) {
   ASSERT_EQ(n.members.size(), 1u);
   EXPECT_EQ(n.members[0].first, nasty);
   EXPECT_EQ(n.members[0].second.text, nasty);
+}
+
+// A name or path that is not valid UTF-8 (a scene file's bytes) is still written: its
+// bad bytes become U+FFFD, never an exception that would lose the summary.
+TEST(Json, InvalidUtf8IsReplacedNotRefused) {
+  Json j = Json::object();
+  j.set("scene", std::string("cell\xff\xfe.toml"));
+  std::string text;
+  ASSERT_NO_THROW(text = j.dump());
+  const Node n = Parser(text).parse();
+  EXPECT_EQ(n.at("scene").text, "cell\xef\xbf\xbd\xef\xbf\xbd.toml");
 }
 
 TEST(Json, NumbersReadBackBitForBit) {

@@ -1,6 +1,7 @@
-// A minimal JSON value and writer for run summaries (summary.json). Objects
-// keep insertion order so the file reads in the order the program filled it.
-// Only writing is supported; nothing in the simulator needs to read JSON.
+// A JSON value for run summaries (summary.json), serialised by nlohmann/json (a
+// private dependency: json.cpp). Objects keep insertion order so the file reads in the
+// order the program filled it. Only writing is supported; nothing in the simulator
+// needs to read JSON.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@ class Json {
  public:
   using Array = std::vector<Json>;
   using Object = std::vector<std::pair<std::string, Json>>;
+  using Value = std::variant<std::nullptr_t, bool, std::int64_t, double, std::string, Array, Object>;
 
   Json() = default;  // null
   Json(std::nullptr_t) {}
@@ -45,6 +47,8 @@ class Json {
   // must never claim a non-finite result silently.
   std::string dump(int indent = 2) const;
 
+  const Value& value() const { return value_; }
+
  private:
   template <typename T>
   static std::int64_t checked_int64(T i) {
@@ -54,9 +58,8 @@ class Json {
     return static_cast<std::int64_t>(i);
   }
   [[noreturn]] static void throw_int_overflow();
-  void dump_to(std::string& out, int indent, int depth, const std::string& path) const;
 
-  std::variant<std::nullptr_t, bool, std::int64_t, double, std::string, Array, Object> value_{nullptr};
+  Value value_{nullptr};
 };
 
 // JSON string literal for `s` (quotes included), escaping '"', '\\' and
