@@ -55,6 +55,16 @@ rkpm_need() {
   done
 }
 
+# rkpm_need_python_modules MODULE...: Debian's /usr/bin/python3 must import each (the
+# studies' Python runs on it: a python3 first on the PATH may lack numpy or scipy).
+rkpm_need_python_modules() {
+  local m
+  for m in "$@"; do
+    /usr/bin/python3 -c "import $m" 2>/dev/null ||
+      rkpm_die "/usr/bin/python3 with $m is required (bash scripts/install-deps.sh installs it)"
+  done
+}
+
 # rkpm_replace_generated DOC FILE [KEY]: replaces the text between DOC's
 # "<!-- BEGIN GENERATED" line (the one that also holds KEY, when a page has several
 # generated blocks) and the next "<!-- END GENERATED" line with FILE's contents.

@@ -27,10 +27,7 @@ for arg in "$@"; do
   esac
 done
 rkpm_need gnuplot
-# Debian's python3 holds numpy and scipy (scripts/install-deps.sh); another python3
-# first on the PATH may not.
-/usr/bin/python3 -c "import numpy, scipy" 2>/dev/null ||
-  rkpm_die "/usr/bin/python3 with numpy and scipy is required (bash scripts/install-deps.sh installs them)"
+rkpm_need_python_modules numpy scipy
 mkdir -p "$out"
 
 PYTHONPATH="$here/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 - "$out" "$coarse" <<'PY' | tee "$out/summary.txt"

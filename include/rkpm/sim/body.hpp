@@ -124,6 +124,12 @@ rk::RKApproximation approximation(const Body& body);
 // quantities derived from whole-body sums must (a centroid, a mean modulus).
 std::vector<Index> one_rank_order(const Body& body);
 
+// Particle i's id in a one-rank run of the scene (the identity on one rank): how
+// messages and outputs name a particle whatever the rank count.
+inline std::int64_t one_rank_id(const Body& body, Index i) {
+  return body.original_id.empty() ? static_cast<std::int64_t>(i) : body.original_id[static_cast<std::size_t>(i)];
+}
+
 // The volume-weighted centre of the reference cloud, summed in the one-rank numbering:
 // the same bits for any rank count (an initial stretch and a material's initial state
 // read it, and a round-off difference would change what a particle at the centre gets).

@@ -64,12 +64,11 @@ DirectorField initial_director(const scene::BodySpec& spec, const sim::Body& bod
         // does not depend on how a distributed run renumbered the particles.
         const auto nearest = search.nearest(cloud.X[i], found);
         Index pick = nearest.first;
-        const auto one_rank_id = [&](Index b) {
-          const auto j = static_cast<std::size_t>(cloud.boundary_particles[static_cast<std::size_t>(b)]);
-          return body.original_id.empty() ? static_cast<std::int64_t>(j) : body.original_id[j];
+        const auto id_of = [&](Index b) {
+          return sim::one_rank_id(body, static_cast<Index>(cloud.boundary_particles[static_cast<std::size_t>(b)]));
         };
         for (const auto& f : found)
-          if (f.second == nearest.second && one_rank_id(f.first) < one_rank_id(pick)) pick = f.first;
+          if (f.second == nearest.second && id_of(f.first) < id_of(pick)) pick = f.first;
         dir.h[i] = oriented(cloud.boundary_normal[pick], i);
         for (const auto& f : found)
           if (oriented(cloud.boundary_normal[f.first], i).dot(dir.h[i]) < 0.5) ambiguous[i] = 1;  // > 60 deg apart

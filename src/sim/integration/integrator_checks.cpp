@@ -86,7 +86,7 @@ void Integrator::check_state() {
                           "the particle left the domain (runaway motion)"};
     const Vec3 X = b.cloud.X[first];
     // The particle's id in a one-rank run of the scene, whatever the rank count.
-    const std::int64_t id = b.original_id.empty() ? first : b.original_id[static_cast<std::size_t>(first)];
+    const std::int64_t id = one_rank_id(b, first);
     diagnosis = fmt::format(
         "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
         "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "

@@ -63,7 +63,7 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   out[9] = b.id;
   // The particle's number in a one-rank run, whatever the rank count: what a user
   // compares runs on different rank counts by (exact in a double below 2^53).
-  out[10] = static_cast<double>(b.original_id.empty() ? J : b.original_id[static_cast<std::size_t>(J)]);
+  out[10] = static_cast<double>(one_rank_id(b, J));
   out[11] = b.cloud.volume[J];
   out[12] = b.F[J].determinant();
   stress_at(b, static_cast<std::size_t>(J), out + 13, out[22]);
@@ -127,7 +127,7 @@ BodyFields body_fields(const Body& b, const par::Comm& comm) {
     // Ids up to 2^53 are exact as doubles.
     std::vector<double> own_ids;
     for (Index i = b.owned_begin(); i < b.owned_end(); ++i)
-      own_ids.push_back(static_cast<double>(b.original_id.empty() ? i : b.original_id[static_cast<std::size_t>(i)]));
+      own_ids.push_back(static_cast<double>(one_rank_id(b, i)));
     const std::vector<double> ids = comm.gather(own_ids);
     for (auto* field : {&f.position, &f.displacement, &f.velocity})
       gather_in_original_order(comm, ids, *field, 3);

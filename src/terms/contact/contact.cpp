@@ -96,7 +96,7 @@ std::string Contact::diagnose(const World& world) {
     if (s.deepest < 0 || s.min_gap >= -0.5 * s0_ || !overlap_[k]->encloses(s.deepest_position)) continue;
     const Body& inside = *bodies[k];
     const Index i = s.deepest;
-    const std::int64_t id = inside.original_id.empty() ? i : inside.original_id[static_cast<std::size_t>(i)];
+    const std::int64_t id = one_rank_id(inside, i);
     const Vec3& X = inside.cloud.X[i];
     const Vec3& x = s.deepest_position;
     if (world.step == 0)

@@ -36,7 +36,7 @@ SurfaceHollow widest_facing_hollow(const Body& body, const Vec3& towards) {
     const Vec3 normal = (b - a).cross(c - a);
     if (normal.dot(towards - (a + b + c) / 3.0) <= 0.0) return;
     const auto [centre, radius] = triangle_hollow(a, b, c);
-    if (radius > widest.radius) widest = {radius, centre, static_cast<Index>(i0)};
+    if (radius > widest.radius) widest = {radius, centre};
   };
   for (const auto& face : cloud.boundary_faces) {
     consider(face.nodes[0], face.nodes[1], face.nodes[2]);

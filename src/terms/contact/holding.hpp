@@ -24,7 +24,6 @@ namespace rkpm::sim {
 struct SurfaceHollow {
   double radius = 0.0;  // R_h [m]; 0 when the body has no facing face
   Vec3 centre = Vec3::Zero();
-  Index corner = -1;    // one of its corner particles
 };
 
 // The widest hollow among the faces of `body` (reference configuration, quadrilaterals
