@@ -34,7 +34,7 @@ namespace rkpm::materials {
 std::vector<scene::ParamTable> material_tables();
 
 // A [body.material] variant table with its selector set: the start of every model's table.
-// `own_sections`: the model's own sub-tables of [[body]] (the LCE's [body.director]),
+// `own_sections`: the model's own sub-tables of [[body]] (the LCE's own table),
 // which only its bodies take; BodySpec::material_section reads them.
 scene::ParamTable material_table(std::string model, std::string help, std::vector<scene::ParamTable> own_sections = {});
 

@@ -1,5 +1,6 @@
 // What a material may carry besides its parameters: per-point state that the step
-// advances (the LCE's director, a viscoelastic material's internal variables), and the
+// advances (the LCE's orientation field, Eq. 5-8; a viscoelastic material's internal
+// variables), and the
 // hooks through which the integrator, the checkpoint and the output reach it. A model
 // whose BodyMaterial derives from `Stateless` has none of it and inherits hooks that do
 // nothing; a stateful model overrides the ones it needs (by name: the calls are resolved
@@ -46,7 +47,7 @@ struct StateUpdate {
 };
 
 // A per-particle vector field whose reference gradient enters the stress (the LCE's
-// director, for the Frank term): the force pass pulls its ghosts, gathers Grad_X of it
+// orientation field, for the Frank term, Eq. 6): the force pass pulls its ghosts, gathers Grad_X of it
 // with F in the same sweep of a row, and, when `flux` is set, scatters the weak
 // divergence of the flux dW/d(Grad_X) in a second channel. Empty (`values` null) for a
 // material without one.

@@ -147,7 +147,7 @@ class Loader {
     spec.rk = plain_sub_table(body_table, "rk");
     spec.initial = plain_sub_table(body_table, "initial");
 
-    // A model's own sub-tables (the LCE's [body.director]) exist exactly for the models
+    // A model's own sub-tables (the LCE's own table) exist exactly for the models
     // whose table declares them; other models reject them.
     for (const auto& name : body_subsections()) {
       const std::string section = "body." + name;

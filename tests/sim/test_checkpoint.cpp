@@ -211,7 +211,7 @@ TEST(Checkpoint, AnotherFormatVersionIsRefusedWithExitCode2) {
   const std::uint32_t version = 2;  // before the inertia (mass scaling) was saved
   std::memcpy(&bytes[8], &version, sizeof version);  // after the 8-byte magic
   write_text(dir / "v2.bin", bytes);
-  expect_refused(dir, dir / "v2.bin", "checkpoint format version 2; this build reads version 6");
+  expect_refused(dir, dir / "v2.bin", "checkpoint format version 2; this build reads version 7");
   // The format before versions and names: positional fields.
   std::string old = read_text(checkpoint);
   old[7] = '1';

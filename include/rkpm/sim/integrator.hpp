@@ -7,6 +7,7 @@
 #include "rkpm/sim/fire.hpp"
 #include "rkpm/sim/newton_krylov.hpp"
 #include "rkpm/sim/state_record.hpp"
+#include "rkpm/sim/step_size_policy.hpp"
 #include "rkpm/sim/world.hpp"
 
 #include <cstdint>
@@ -51,7 +52,7 @@ struct EnergyLedger {
   double external = 0.0;     // work done by loads and moving supports
   double active = 0.0;       // non-conservative work of the materials (the LCE's active stress, Eq. 1)
   double state = 0.0;        // stored energy changed by the materials' state updates at fixed F:
-                             // negative where a state relaxes (the LCE director's Allen-Cahn
+                             // negative where a state relaxes (the LCE's Allen-Cahn
                              // relaxation, Eq. 5; a viscous branch); the LCE's co-rotation
                              // (Eq. 7) and anchoring (Eq. 8) exchange energy either way
   double dissipated = 0.0;   // removed by damping and by FIRE velocity resets
@@ -71,6 +72,8 @@ struct BlowUp : std::runtime_error {
 class Integrator {
  public:
   Integrator(World& world, IntegratorSettings settings);
+  Integrator(const Integrator&) = delete;  // its step-size policy refers to its settings
+  Integrator& operator=(const Integrator&) = delete;
 
   // Forces and accelerations at the initial state, the stable step and the ledger.
   void initialize();
@@ -81,7 +84,7 @@ class Integrator {
   // The step the next step() takes: the policy's step, and in dynamic mode no longer
   // than the motion limit.
   double dt() const { return mode_step_limit(); }
-  double stable_dt() const { return stable_dt_; }
+  double stable_dt() const { return step_size_.stable_dt(); }
   // Recomputes the kinetic and stored energies at the current state and returns the ledger.
   const EnergyLedger& measure_energy();
   // Relaxation: the convergence measures after the last step.
@@ -95,7 +98,7 @@ class Integrator {
   double kinetic_measure() const { return kinetic_measure_; }
   bool converged() const;
   // The step was clamped to the stable estimate (a warning for the user).
-  bool dt_clamped() const { return dt_clamped_; }
+  bool dt_clamped() const { return step_size_.clamped(); }
   double min_J() const { return min_J_; }
   // The stable step at the start before mass scaling (= stable_dt() at the start without it).
   double unscaled_stable_dt() const { return unscaled_stable_dt_; }
@@ -184,8 +187,7 @@ class Integrator {
 
   World& world_;
   IntegratorSettings settings_;
-  double dt_ = 0.0, stable_dt_ = 0.0;
-  bool dt_clamped_ = false;
+  StepSizePolicy step_size_;  // refers to settings_, declared before it
   EnergyLedger ledger_;
   double term_power_ = 0.0, support_power_ = 0.0;
   double residual_ = 0.0, kinetic_measure_ = 0.0, state_measure_ = 0.0, min_J_ = 1.0;

@@ -69,7 +69,7 @@ ParamTable integrator_section() {
                 "boundary conditions amplify (their transformation moves a constrained coordinate by more "
                 "than a free one moves: a coarse unstructured tetrahedral cloud with a fixed face, whose "
                 "true stable step can be a third of the wave-speed step; docs/verification/stability.md). wave_speed: the shortest spacing over the material's "
-                "wave speed at each particle, each term's own limit, and a material state's own (an LCE director's: 2 / (L times its stiffness), docs/verification/stability.md). measured: the bodies' wave-speed "
+                "wave speed at each particle, each term's own limit, and a material state's own (the LCE's, docs/verification/stability.md). measured: the bodies' wave-speed "
                 "step calibrated by 2 / omega_max, the largest natural frequency of the discretisation and "
                 "the terms, measured by power iteration at the start and every 1000 steps (a few tens of "
                 "force evaluations each). On the RBC shell it is 1.9x the wave-speed step; where a term's own "
@@ -97,9 +97,8 @@ ParamTable integrator_section() {
                 "of mu V summed over the bodies (shear modulus times volume)."),
       ParamSpec::real("relax_state_tol", "-").at_least(0).defaults(0.0)
           .help("relax mode: converged only when, in addition, every material's per-point state is at its own "
-                "equilibrium: its residual (summary.json's state_residual; for an LCE body the largest part of "
-                "dF/dh across h over the shear modulus, where for s = 2 at rest 0.01 is a director about 1 degree "
-                "off) falls below this. 0 = the state is not part of the stop (it is reported only; "
+                "equilibrium: its residual (summary.json's state_residual, in the material's own measure) "
+                "falls below this. 0 = the state is not part of the stop (it is reported only; "
                 "docs/theory/relaxation.md)."),
       ParamSpec::integer("seed").at_least(0).defaults(std::int64_t{1})
           .help("Seed of the random numbers used by the run (initial random velocities)."),
@@ -114,7 +113,7 @@ ParamTable integrator_section() {
                 "f(d) = 0 from FIRE's end state, each linear system solved by GMRES with the tangent applied as a "
                 "difference of two force evaluations (Jacobian-free Newton-Krylov) and a backtracking line search "
                 "on the residual, until the residual measure of relax_force_tol falls below finish_force_tol. "
-                "The materials' state is carried with each update (an LCE director's co-rotation and anchoring); "
+                "The materials' state is carried with each update (as the LCE's own update defines it); "
                 "a state that relaxes in time by itself (an LCE with mobility > 0, a viscous material) and "
                 "distributed runs are refused. docs/theory/relaxation.md, \"The Newton-Krylov finish\"."),
       ParamSpec::real("finish_force_tol", "-").greater_than(0).defaults(1e-8)

@@ -28,7 +28,7 @@ double body_volume(const World& world, const Body& body) {
 }  // namespace
 
 Integrator::Integrator(World& world, IntegratorSettings settings)
-    : world_(world), settings_(settings), fire_(settings.fire) {}
+    : world_(world), settings_(settings), step_size_(settings_), fire_(settings.fire) {}
 
 // Forces at the new positions (the bodies' internal forces, then every term's) and the
 // essential boundary conditions by the transformation method (its reactions' power
@@ -76,17 +76,7 @@ void Integrator::initialize() {
     settings_.measured_stable_step = true;
   if (settings_.measured_stable_step) calibrate_stable_step();
   scale_inertia_for_terms();
-  stable_dt_ = estimate_stable_dt();
-  const double automatic = settings_.dt_safety * stable_dt_;
-  if (settings_.dt > 0.0) {
-    dt_ = settings_.dt;
-    if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
-      dt_ = automatic;
-      dt_clamped_ = true;
-    }
-  } else {
-    dt_ = automatic;
-  }
+  step_size_.start(estimate_stable_dt());
   if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   ledger_ = EnergyLedger{};
   ledger_.kinetic = kinetic_energy(world_);
@@ -111,7 +101,7 @@ void Integrator::initialize() {
 void Integrator::step() {
   StepBook& book = book_;
   book.h = dt();
-  if (book.h < dt_) ++motion_limited_steps_;
+  if (book.h < step_size_.dt()) ++motion_limited_steps_;
   book.old_term_power = term_power_;
   book.damping_power = 0.0;
   book.fire_dissipated = 0.0;
@@ -172,8 +162,8 @@ void Integrator::second_kick(double h) {
 // Relaxation: FIRE (Bitzek et al. 2006) mixes or stops the step-end velocities and sets
 // the next step, never above the stable step.
 void Integrator::fire(StepBook& book) {
-  const FireStep r = fire_.update(world_, dt_, settings_.dt_safety * stable_dt_);
-  dt_ = r.dt;
+  const FireStep r = fire_.update(world_, step_size_.dt(), step_size_.ceiling());
+  step_size_.take_fire_step(r.dt);
   book.fire_dissipated = r.dissipated;
   if (r.step_back) step_back(book);
 }
@@ -198,7 +188,7 @@ void Integrator::step_back(StepBook& book) {
     jump_[k] = b.d;  // the coordinates before the jump
     if (has_material_state(b)) jump_F_[k] = b.F;
 #pragma omp parallel for schedule(static)
-    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * dt_ * b.v[i];
+    for (Index i = b.owned_begin(); i < b.owned_end(); ++i) b.d[i] -= 0.5 * step_size_.dt() * b.v[i];
   }
   stop_bodies(world_);  // the constrained coordinates follow the free ones
   // The jump as the velocity, for the loads' power along it.
@@ -286,7 +276,7 @@ NewtonKrylovReport Integrator::finish_newton_krylov(const NewtonKrylovSettings& 
   return report;
 }
 
-// Each body's material state moves at fixed positions (the LCE's director, Eq. 5-8):
+// Each body's material state moves at fixed positions (the LCE's, Eq. 5-8):
 // the non-conservative work of the step's motion and the stored energy the update
 // changes, booked apart.
 void Integrator::advance_states(StepBook& book) {
@@ -300,9 +290,7 @@ void Integrator::advance_states(StepBook& book) {
 
 StateRecord Integrator::save_state() const {
   StateRecord s;
-  s.put_real("dt", dt_);
-  s.put_real("stable_dt", stable_dt_);
-  s.put_integer("dt_clamped", dt_clamped_ ? 1 : 0);
+  step_size_.save(s);
   s.put_real("ledger.external", ledger_.external);
   s.put_real("ledger.active", ledger_.active);
   s.put_real("ledger.dissipated", ledger_.dissipated);
@@ -324,16 +312,12 @@ StateRecord Integrator::save_state() const {
 }
 
 void Integrator::load_state(const StateRecord& s) {
-  dt_ = s.real("dt");
-  stable_dt_ = s.real("stable_dt");
-  dt_clamped_ = s.integer("dt_clamped") != 0;
+  step_size_.load(s);
   ledger_.external = s.real("ledger.external");
   ledger_.active = s.real("ledger.active");
   ledger_.dissipated = s.real("ledger.dissipated");
   ledger_.initial = s.real("ledger.initial");
-  // Checkpoints written before the materials' state had hooks of its own name the entry
-  // after the LCE's director.
-  ledger_.state = s.has("ledger.state") ? s.real("ledger.state") : s.real("ledger.director");
+  ledger_.state = s.real("ledger.state");
   term_power_ = s.real("term_power");
   support_power_ = s.real("support_power");
   fire_ = Fire(settings_.fire, s.real("fire.alpha"), s.integer("fire.positive_steps"));

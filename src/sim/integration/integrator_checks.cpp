@@ -91,7 +91,7 @@ void Integrator::check_state() {
         "unstable at step {} (t = {:.6g} s, dt = {:.3g} s): body '{}', particle {} (reference position "
         "({:.4g}, {:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m): {}; J = {:.4g}, |v| = {:.4g} m/s. "
         "The stable step estimate is {:.3g} s.",
-        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), what[why], J, b.v[first].norm(), stable_dt_);
+        world_.step, world_.time, dt(), b.name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), what[why], J, b.v[first].norm(), stable_dt());
     break;
   }
   diagnosis = world_.comm->first_error(diagnosis);

@@ -24,7 +24,7 @@ double Integrator::bodies_wave_dt() const {
 // each term's own limit, and the material states' (state_stable_dt): the calibration is
 // measured on the bodies' material stiffness together with whatever the terms add at
 // that state, but a term that stiffens later (a contact that closes) keeps the limit
-// it states, and a state's first-order relaxation (an LCE director's, Eq. 5) is not a
+// it states, and a state's first-order relaxation (the LCE's, Eq. 5) is not a
 // vibration the calibration sees.
 double Integrator::estimate_stable_dt() const {
   double dt = calibration_ * bodies_wave_dt();
@@ -87,10 +87,7 @@ void Integrator::scale_masses() {
 
 // The stable step follows the state (stiffening, contact): it is re-estimated every
 // stable_step_interval steps (10 by default; 1 for releases from large strain,
-// docs/verification/stability.md). Three cases: a user step is kept while it stays below the
-// estimate (as at the start) and, once clamped, the run follows the automatic step; a dynamic run (or a
-// clamped one) takes the automatic step; FIRE grows its step by itself, up to the
-// automatic step as a ceiling.
+// docs/verification/stability.md), and the mode's step follows it (StepSizePolicy).
 void Integrator::step_size_policy() {
   if (settings_.mode == Mode::Dynamic) motion_dt_ = motion_limited_dt();
   if (world_.step % settings_.stable_step_interval != 0) return;
@@ -99,18 +96,7 @@ void Integrator::step_size_policy() {
   if (settings_.measured_stable_step && world_.step % kCalibrateEvery < settings_.stable_step_interval)
     calibrate_stable_step();
   scale_inertia_for_terms();
-  stable_dt_ = estimate_stable_dt();
-  const double automatic = settings_.dt_safety * stable_dt_;
-  if (settings_.dt > 0.0 && !dt_clamped_) {
-    if (dt_ > stable_dt_ && !settings_.allow_unstable_dt) {
-      dt_ = automatic;
-      dt_clamped_ = true;
-    }
-  } else if (settings_.mode == Mode::Dynamic || dt_clamped_) {
-    dt_ = automatic;
-  } else {
-    dt_ = std::min(dt_, automatic);
-  }
+  step_size_.follow(estimate_stable_dt());
 }
 
 // A release from a large strain accelerates particles so hard that they cross their
@@ -137,8 +123,8 @@ double Integrator::motion_limited_dt() const {
 // Dynamic runs take the policy's step or the motion limit, the smaller; a testing run
 // that allows unstable steps keeps its step as given.
 double Integrator::mode_step_limit() const {
-  if (settings_.mode != Mode::Dynamic || settings_.allow_unstable_dt) return dt_;
-  return std::min(dt_, motion_dt_);
+  if (settings_.mode != Mode::Dynamic || settings_.allow_unstable_dt) return step_size_.dt();
+  return std::min(step_size_.dt(), motion_dt_);
 }
 
 }  // namespace rkpm::sim

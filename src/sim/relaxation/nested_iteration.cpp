@@ -113,7 +113,7 @@ Transfer carry_body(const par::Comm& comm, const Body& from, Body& to) {
                                      from.name, from.size(), to.size(), e.what()));
       }
   }
-  // The material's state (an LCE director), interpolated the same way; the material
+  // The material's state (the LCE's), interpolated the same way; the material
   // decides what it keeps of it. The shape functions are evaluated again: holding them
   // for every fine particle would cost more memory than the finest cloud itself.
   if (has_material_state(to)) {

@@ -22,9 +22,10 @@ namespace {
 //   u64 FNV-1a digest of every byte before it.
 constexpr char kMagic[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', 'T'};
 constexpr char kMagicFormat1[8] = {'R', 'K', 'P', 'M', 'C', 'K', 'P', '1'};  // positional fields, no version
-constexpr std::uint32_t kFormatVersion = 6;  // 3: the inertia (mass scaling) per body; 4: the stable step's
+constexpr std::uint32_t kFormatVersion = 7;  // 3: the inertia (mass scaling) per body; 4: the stable step's
                                              // calibration; 5: the rank and rank count; 6: each body's
-                                             // forces instead of its accelerations
+                                             // forces instead of its accelerations; 7: the ledger's
+                                             // material-state entry named ledger.state (any material's)
 
 std::uint64_t fnv1a(const char* data, std::size_t n) {
   std::uint64_t h = 0xcbf29ce484222325ULL;

@@ -24,7 +24,7 @@ constexpr double kPi = 3.14159265358979323846;
 // F per point (72; the stress, positions and accelerations are not stored), mass,
 // inertia, volume, spacing, stabilization weight, a surface term's quadrature, the
 // set-up's kd-tree and support radii (freed before the run, but part of the peak), the
-// per-point state of a stateful material (an LCE body's director arrays) and the
+// per-point state of a stateful material (an LCE body's arrays) and the
 // force pass's per-thread buffers. The largest of the geometries' measured peaks beyond
 // the operators (the RBC shell's), rounded up, plus what the volume constraint's copy of
 // its rows in particle order adds on that shell; docs/verification/performance.md holds
