@@ -431,6 +431,40 @@ def maugis_dugdale(R, w, sigma0, E_star, load=0.0):
     return MaugisDugdale(a=p.A * length, c=p.m * p.A * length, delta=p.Delta * depth, P=load, point=p)
 
 
+def md_pressure(r, contact, R, sigma0, E_star):
+    """The normal pressure [Pa] (> 0 compressive) at the radii r [m] of a Maugis-Dugdale
+    contact (`maugis_dugdale`): the Hertz pressure of its contact radius a less the
+    Dugdale adhesion's share inside a, the tension sigma0 over a < r < c, none beyond
+    (Maugis 1992):
+
+        p(r) = (2 E* / (pi R)) sqrt(a^2 - r^2)
+               - (2 sigma0 / pi) arctan sqrt((c^2 - a^2) / (a^2 - r^2))    r < a,
+        p(r) = -sigma0                                                    a < r < c.
+
+    Its integral over the plane is the load: 4 E* a^3 / (3 R) from the first term and
+    -2 sigma0 a^2 (sqrt(m^2 - 1) + m^2 arctan sqrt(m^2 - 1)) from the rest, Eq. (10)."""
+    r = np.asarray(r, float)
+    a, c = contact.a, contact.c
+    inside = r < a
+    q = np.where(inside, a * a - r * r, 1.0)
+    hertz = 2.0 * E_star / (math.pi * R) * np.sqrt(q)
+    adhesive = 2.0 * sigma0 / math.pi * np.arctan(np.sqrt((c * c - a * a) / q))
+    return np.where(inside, hertz - adhesive, np.where(r < c, -sigma0, 0.0))
+
+
+def md_zero_pressure_radius(contact, R, sigma0, E_star):
+    """The radius [m] inside which a Maugis-Dugdale contact presses (`md_pressure` > 0):
+    the edge of the compressive zone, which a simulation with a continuous law measures
+    as the zero of its traction. In the DMT limit it is a (the Hertz pressure inside,
+    the tension outside); towards JKR the adhesion pulls inside the edge too, and at
+    zero load it falls to sqrt(2/3) a (JKR's pressure p0 sqrt(1 - x^2) - q / sqrt(1 - x^2)
+    with q / p0 = 1/3)."""
+    p = lambda r: float(md_pressure(r, contact, R, sigma0, E_star))
+    if p(0.0) <= 0.0:
+        return 0.0
+    return optimize.brentq(p, 0.0, contact.a * (1.0 - 1e-12), xtol=1e-15 * contact.a)
+
+
 def maugis_dugdale_pull_off(R, w, sigma0, E_star):
     """The Maugis-Dugdale pull-off force [N] under load control (`md_pull_off`)."""
     return md_pull_off(maugis_parameter(R, w, sigma0, E_star)).Pbar * math.pi * w * R

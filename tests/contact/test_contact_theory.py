@@ -365,3 +365,41 @@ def test_the_command_line_prints_the_table(capsys):
     out = capsys.readouterr().out
     assert "contact law: w = " in out and "MD applies" in out
     assert all(name in out for name in ("JKR", "DMT", "MD"))
+
+
+@pytest.mark.parametrize("lam,load_over_piwR", [(0.37, 0.0), (1.0, 0.0), (0.37, 2.0)])
+def test_the_maugis_dugdale_pressure_integrates_to_the_load(lam, load_over_piwR):
+    # sigma0 chosen for the wanted lambda at R, w, E*: lambda = 2 sigma0 (R / (pi w K^2))^(1/3).
+    R, w, E_star = 5e-6, 6.4e-4, 3.7e4
+    K = 4.0 * E_star / 3.0
+    sigma0 = lam / (2.0 * (R / (math.pi * w * K * K)) ** (1.0 / 3.0))
+    load = load_over_piwR * math.pi * w * R
+    contact = ct.maugis_dugdale(R, w, sigma0, E_star, load)
+    # Over r < a in u = sqrt(a^2 - r^2) (the square-root edge becomes smooth), then the
+    # Dugdale ring a < r < c at -sigma0 exactly.
+    a, c = contact.a, contact.c
+    inside = integrate.quad(lambda u: 2.0 * math.pi * u * float(ct.md_pressure(math.sqrt(max(a * a - u * u, 0.0)),
+                                                                             contact, R, sigma0, E_star)),
+                            0.0, a, limit=200, epsabs=0.0, epsrel=1e-11)[0]
+    ring = -sigma0 * math.pi * (c * c - a * a)
+    scale = 4.0 * E_star * a ** 3 / (3.0 * R)  # the Hertz share, against which a zero load is small
+    assert inside + ring == pytest.approx(load, abs=1e-8 * scale)
+
+
+def test_the_compressive_zone_of_maugis_dugdale_runs_from_a_in_dmt_to_jkrs_closed_form():
+    # JKR at zero load: p = p0 sqrt(1 - x^2) - q / sqrt(1 - x^2), x = r / a, with
+    # q / p0 = 1/3 (a^3 = 9 pi w R^2 / (2 E*)), so it presses inside x = sqrt(2/3).
+    # DMT: the Hertz pressure inside a, the tension outside: it presses inside a.
+    R, w, E_star = 5e-6, 6.4e-4, 3.7e4
+    K = 4.0 * E_star / 3.0
+    ratios = []
+    for lam in (0.01, 0.37, 1.0, 50.0):
+        sigma0 = lam / (2.0 * (R / (math.pi * w * K * K)) ** (1.0 / 3.0))
+        contact = ct.maugis_dugdale(R, w, sigma0, E_star)
+        a0 = ct.md_zero_pressure_radius(contact, R, sigma0, E_star)
+        assert float(ct.md_pressure(0.999 * a0, contact, R, sigma0, E_star)) > 0.0
+        assert float(ct.md_pressure(1.001 * a0, contact, R, sigma0, E_star)) < 0.0
+        ratios.append(a0 / contact.a)
+    assert ratios[0] == pytest.approx(1.0, abs=0.01)
+    assert ratios[-1] == pytest.approx(math.sqrt(2.0 / 3.0), rel=0.01)
+    assert ratios == sorted(ratios, reverse=True)

@@ -50,6 +50,11 @@ class Term {
   virtual std::string diagnose(const World&) { return {}; }
   // Adds the term's own metrics to the run summary.
   virtual void report(const World&, io::Json&) const {}
+  // Per-particle fields the term shows in the output frames for `body`, by name, as
+  // views of its own arrays at its last force evaluation (contact: each particle's
+  // contact force); none by default. A distributed body's frame reads the owned
+  // particles' values.
+  virtual std::vector<materials::OutputField> output_fields(const Body&) const { return {}; }
   // Columns the term adds to history.csv: their names, and their values at the present
   // state as text, each preceded by a comma (",0.98,12.5"). None by default.
   virtual std::vector<std::string> history_columns() const { return {}; }

@@ -13,30 +13,39 @@ namespace {
 
 // What a frame holds per point, in the order of the frame's fields: position (3),
 // displacement (3), velocity (3), body_id, particle_id, volume, J, cauchy_stress (9),
-// von_mises; then the fields the bodies' materials declare (MaterialSlots).
+// von_mises; then the fields the bodies' materials and the terms declare (FieldSlots).
 constexpr int kBaseRecord = 23;
 
-// The material fields of a frame: the union over its bodies of the fields their
-// materials declare (material_output_fields), in body order, each at its offset in the
-// point record. A body whose material lacks one of them writes zeros there.
-struct MaterialSlot {
+// The fields a body shows beyond the base record: its material's, then each term's for
+// it (Term::output_fields), in term order.
+std::vector<materials::OutputField> declared_fields(const World& world, const Body& body) {
+  std::vector<materials::OutputField> fields = material_output_fields(body);
+  for (const auto& t : world.terms)
+    for (auto& f : t->output_fields(body)) fields.push_back(std::move(f));
+  return fields;
+}
+
+// The declared fields of a frame: the union over its bodies of their declared_fields,
+// in body order, each at its offset in the point record. A body that lacks one of them
+// writes zeros there.
+struct FieldSlot {
   std::string name;
   int components = 0;
   int offset = 0;  // in the point record
 };
-std::vector<MaterialSlot> material_slots(const World& world) {
-  std::vector<MaterialSlot> slots;
+std::vector<FieldSlot> field_slots(const World& world) {
+  std::vector<FieldSlot> slots;
   int offset = kBaseRecord;
   for (const auto& b : world.bodies)
-    for (const auto& f : material_output_fields(*b)) {
-      const auto same = [&](const MaterialSlot& s) { return s.name == f.name; };
+    for (const auto& f : declared_fields(world, *b)) {
+      const auto same = [&](const FieldSlot& s) { return s.name == f.name; };
       if (std::find_if(slots.begin(), slots.end(), same) != slots.end()) continue;
       slots.push_back({f.name, f.components, offset});
       offset += f.components;
     }
   return slots;
 }
-int record_size(const std::vector<MaterialSlot>& slots) {
+int record_size(const std::vector<FieldSlot>& slots) {
   return slots.empty() ? kBaseRecord : slots.back().offset + slots.back().components;
 }
 
@@ -69,8 +78,8 @@ void point_record(const Body& b, Index J, const std::vector<Vec3>& d, const std:
   stress_at(b, static_cast<std::size_t>(J), out + 13, out[22]);
 }
 
-// The material fields of particle J into its record, at the slots' offsets.
-void material_record(const std::vector<materials::OutputField>& own, const std::vector<MaterialSlot>& slots, Index J,
+// The declared fields of particle J into its record, at the slots' offsets.
+void declared_record(const std::vector<materials::OutputField>& own, const std::vector<FieldSlot>& slots, Index J,
                      double* out) {
   for (const auto& slot : slots) {
     double* to = out + slot.offset;
@@ -167,7 +176,7 @@ void require_finite(const World& world, const std::vector<Vec3>& positions,
 }  // namespace
 
 io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& positions) {
-  const std::vector<MaterialSlot> slots = material_slots(world);
+  const std::vector<FieldSlot> slots = field_slots(world);
   const int record_length = record_size(slots);
   std::size_t total = 0;
   for (const auto& b : world.bodies) {
@@ -216,11 +225,11 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
   for (const auto& bp : world.bodies) {
     const Body& b = *bp;
     const Index begin = b.owned_begin(), end = b.owned_end();
-    const std::vector<materials::OutputField> own = material_output_fields(b);
+    const std::vector<materials::OutputField> own = declared_fields(world, b);
     if (!b.distributed()) {
       for (Index J = 0; J < end; ++J) {
         point_record(b, J, b.d, b.v, record.data());
-        material_record(own, slots, J, record.data());
+        declared_record(own, slots, J, record.data());
         append(record.data());
       }
       add_cells(b, [&](Index J) { return offset + J; });
@@ -239,7 +248,7 @@ io::Frame make_frame(const World& world, CellOutput cells, std::vector<Vec3>& po
     for (Index J = begin; J < end; ++J) {
       double* out = records.data() + length * static_cast<std::size_t>(J);
       point_record(b, J, ghosted_d, ghosted_v, out);
-      material_record(own, slots, J, out);
+      declared_record(own, slots, J, out);
     }
     b.output_halo.pull(records.data(), record_length);
     point_of.assign(b.size(), -1);

@@ -323,6 +323,14 @@ void Contact::report(const World&, io::Json& summary) const {
   summary.set("contact " + a_.name + " " + b_.name, j);
 }
 
+std::vector<materials::OutputField> Contact::output_fields(const Body& body) const {
+  const int k = &body == &a_ ? 0 : &body == &b_ ? 1 : -1;
+  if (k < 0) return {};
+  const Body& other = k == 0 ? b_ : a_;
+  const std::vector<Vec3>& f = force_[static_cast<std::size_t>(k)];
+  return {{"contact_force_" + other.name, 3, f.empty() ? nullptr : f.front().data()}};
+}
+
 std::vector<std::string> Contact::history_columns() const {
   if (!has_report()) return {};
   return {"centroid_x", "centroid_y", "centroid_z", "min_gap", "contact_radius", "contact_particles"};

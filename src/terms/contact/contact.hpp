@@ -94,6 +94,9 @@ class Contact final : public Term {
   std::string diagnose(const World&) override;
   std::vector<std::string> history_columns() const override;
   std::string history_values(const World&) const override;
+  // Frames show each particle's contact force (force_on) as "contact_force_<other
+  // body>": summed over a patch of the surface and divided by its area, the traction.
+  std::vector<materials::OutputField> output_fields(const Body& body) const override;
 
   // At the last force evaluation (over every rank): the energy, the number of pairs
   // inside the cutoff.

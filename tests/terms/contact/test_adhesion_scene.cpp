@@ -16,6 +16,7 @@
 #include "terms/contact/holding.hpp"
 #include "rkpm/scene/param_set.hpp"
 #include "rkpm/sim/integrator.hpp"
+#include "rkpm/sim/output.hpp"
 
 #include <gtest/gtest.h>
 #include <fmt/format.h>
@@ -203,6 +204,61 @@ TEST(AdhesionScene, TheWindingNumberTellsInsideFromOutside) {
   EXPECT_FALSE(report.encloses(Vec3(0.0, 0.0, 4.6e-6)));        // just above the top
   EXPECT_FALSE(report.encloses(Vec3(10.1e-6, 0.0, 2e-6)));      // beside a side
   EXPECT_FALSE(report.encloses(Vec3(0.0, 0.0, -1e-6)));         // below
+}
+
+
+// The frames show each particle's contact force, named after the other body: the
+// term's own forces on the physical points, zero on the body the field is not about,
+// and, summed over each body, equal and opposite (the pair forces cancel).
+TEST(AdhesionScene, FramesShowEachParticlesContactForce) {
+  const double spacing = 20e-6 / 16, s0 = spacing / 1.25;
+  auto w = testing::world_from_text(coarse_scene(16, s0, 0.5 * s0));
+  const Contact* contact = nullptr;
+  for (const auto& t : w.world->terms)
+    if (const auto* c = dynamic_cast<const Contact*>(t.get())) contact = c;
+  ASSERT_NE(contact, nullptr);
+  Integrator integrator(*w.world, integrator_settings(w.scene));
+  integrator.initialize();
+  std::vector<Vec3> positions;
+  const io::Frame frame = make_frame(*w.world, CellOutput::Points, positions);
+  const auto field = [&](const std::string& name) -> const io::PointField& {
+    for (const auto& f : frame.point_fields)
+      if (f.name == name) return f;
+    ADD_FAILURE() << "the frame has no field " << name;
+    return frame.point_fields.front();
+  };
+  const io::PointField& on_cell = field("contact_force_substrate");
+  const io::PointField& on_substrate = field("contact_force_cell");
+  ASSERT_EQ(on_cell.components, 3);
+  const Body& cell = *w.world->bodies[0];
+  const Body& substrate = *w.world->bodies[1];
+  ASSERT_EQ(on_cell.tuples(), cell.size() + substrate.size());
+  Vec3 sum_cell = Vec3::Zero(), sum_substrate = Vec3::Zero();
+  double largest = 0.0;
+  std::size_t touching = 0;
+  std::size_t lowest = 0;
+  for (std::size_t i = 0; i < cell.size(); ++i) {
+    if (cell.cloud.X[i].z() < cell.cloud.X[lowest].z()) lowest = i;
+    const Vec3 f(&on_cell.values[3 * i]);
+    EXPECT_EQ(f, contact->force_on(0)[i]);
+    EXPECT_EQ(Vec3(&on_substrate.values[3 * i]), Vec3::Zero());
+    sum_cell += f;
+    largest = std::max(largest, f.norm());
+    touching += f.norm() > 0.0 ? 1 : 0;
+  }
+  for (std::size_t j = 0; j < substrate.size(); ++j) {
+    const std::size_t row = 3 * (cell.size() + j);
+    const Vec3 f(&on_substrate.values[row]);
+    EXPECT_EQ(f, contact->force_on(1)[j]);
+    EXPECT_EQ(Vec3(&on_cell.values[row]), Vec3::Zero());
+    sum_substrate += f;
+  }
+  // The cell starts at a gap of s0 / 2, inside the equilibrium gap (0.64 s0): its
+  // lowest particle is pushed up; only the particles within the cutoff feel a force.
+  EXPECT_GT(on_cell.values[3 * lowest + 2], 0.0);
+  EXPECT_GT(touching, 5u);
+  EXPECT_LT(touching, cell.size() / 2);
+  EXPECT_LT((sum_cell + sum_substrate).norm(), 1e-12 * largest * static_cast<double>(touching));
 }
 
 }  // namespace
