@@ -35,15 +35,24 @@ def cumulative_normal_force(positions, forces, centre, normal=(0.0, 0.0, 1.0)):
     return r[last], totals[last]
 
 
-def compressive_zone_radius(positions, forces, centre, normal=(0.0, 0.0, 1.0), window=None):
+def compressive_zone_radius(positions, forces, centre, normal=(0.0, 0.0, 1.0), window=None, smoothing=None):
     """The radius [m] where the contact traction changes from pushing to pulling: the
     peak of `cumulative_normal_force`, refined by a least-squares parabola over the radii
     within `window` of the largest value (default: the gap between the radii on either
-    side of it, so that at least three take part). Returns (radius, F at the peak [N])."""
+    side of it, so that at least three take part). Returns (radius, F at the peak [N]).
+
+    `smoothing` [m], for a run's particles: near its peak F is flat, and a lattice cut by
+    a curved surface makes its steps uneven (a tenth of F from one radius to the next on
+    the adhered sphere), so the largest single value can sit a spacing or more from the
+    smooth curve's peak. With `smoothing`, the parabola is fitted over the radii within
+    that half-width of its own vertex, moved until the vertex stays (a local quadratic
+    fit; a few particle spacings is the intended scale)."""
     r, F = cumulative_normal_force(positions, forces, centre, normal)
     k = int(np.argmax(F))
     if k == 0 or k == len(r) - 1 or F[k + 1:].min() >= F[k] * (1.0 - 1e-9):
         raise ValueError("the normal force within r does not fall after its peak: no pulling zone, no edge inside")
+    if smoothing is not None:
+        return _local_quadratic_peak(r, F, r[k], smoothing)
     if window is None:
         window = max(r[k] - r[k - 1], r[k + 1] - r[k])
     near = np.abs(r - r[k]) <= window * (1.0 + 1e-9)
@@ -52,3 +61,21 @@ def compressive_zone_radius(positions, forces, centre, normal=(0.0, 0.0, 1.0), w
         return float(r[k]), float(F[k])
     shift = float(np.clip(-c1 / (2.0 * c2), -window, window))
     return float(r[k] + shift), float(c0 - c1 * c1 / (4.0 * c2))
+
+
+def _local_quadratic_peak(r, F, start, half_width, max_moves=50):
+    """The vertex of the least-squares parabola through (r, F) within `half_width` of the
+    vertex itself, found by moving the window from `start`, and the parabola's value there."""
+    centre = start
+    for _ in range(max_moves):
+        near = np.abs(r - centre) <= half_width
+        if near.sum() < 3:
+            raise ValueError(f"fewer than three radii within {half_width} m of {centre} m: widen the smoothing")
+        c2, c1, c0 = np.polyfit(r[near] - centre, F[near], 2)
+        if c2 >= 0.0:
+            raise ValueError("the normal force within r has no peak at this smoothing")
+        shift = float(np.clip(-c1 / (2.0 * c2), -half_width, half_width))
+        centre += shift
+        if abs(shift) <= 1e-9 * half_width:
+            break
+    return float(centre), float(c0 - c1 * c1 / (4.0 * c2))

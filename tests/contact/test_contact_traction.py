@@ -58,6 +58,21 @@ def test_the_compressive_zone_radius_comes_back_from_lattice_forces(offset):
     assert errors[-1] < 0.01 * EDGE
 
 
+def test_smoothing_finds_the_edge_through_uneven_steps():
+    # Each particle's force off by up to +-30 % (seeded), as a lattice cut by a curved
+    # surface makes the steps of F uneven: the largest single F can sit off the edge,
+    # the local quadratic fit over three spacings stays within a fifth of a spacing.
+    h = 0.15e-6
+    points, forces = lattice_forces(h, (0.37 * h, 0.11 * h))
+    rng = np.random.default_rng(7)
+    noisy = forces * (1.0 + 0.3 * rng.uniform(-1.0, 1.0, size=(len(forces), 1)))
+    smoothed, peak = tr.compressive_zone_radius(points, noisy, centre=(0.0, 0.0, 0.0), smoothing=3 * h)
+    assert peak > 0.0
+    assert abs(smoothed - EDGE) < 0.2 * h, (smoothed, EDGE)
+    clean, _ = tr.compressive_zone_radius(points, forces, centre=(0.0, 0.0, 0.0), smoothing=3 * h)
+    assert abs(clean - EDGE) < 0.1 * h, (clean, EDGE)
+
+
 def test_a_force_that_never_pulls_has_no_edge_inside():
     points, forces = lattice_forces(0.2e-6)
     with pytest.raises(ValueError):

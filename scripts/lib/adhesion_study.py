@@ -1,0 +1,260 @@
+"""The adhered sphere at rest against adhesive contact theory, at several resolutions and
+two moduli (the driver of `scripts/study adhesion-theory`; its header says what it
+writes).
+
+Each run is examples/adhesion/sphere_at_rest.toml with the sphere's `cells` (the block's
+cells follow, spacing matched) and both bodies' moduli scaled by the case's factor (the
+block stays 100 times stiffer). The approach is compared as a difference: how much
+further the softer sphere comes down than the stiffer one on the same clouds. Measured
+from where the undeformed sphere would rest, it would carry the clouds' own offset
+against the block's lattice (a nearly rigid sphere on this block rests 51 nm above the
+continuum's z0 at 16 cells), comparable with the approaches themselves; on the same
+clouds that offset cancels. A run folder that already holds a summary.json is kept."""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+import tomllib
+
+import adhesion_at_rest as A
+from convergence_fit import richardson
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "python", "rkpm"))
+import scene_toml  # noqa: E402  (the module's TOML writer; needs no build)
+
+SCENE = os.path.join(ROOT, "examples", "adhesion", "sphere_at_rest.toml")
+SEED_SCENE = os.path.join(ROOT, "examples", "adhesion", "adhesion.toml")
+# The seed-like scene taken to rest as the sphere is (relax mode, mass scaling), with its
+# two surface-tension terms and without.
+SEED_CASES = {"seed_tension": True, "seed_no_tension": False}
+# name: factor on both bodies' moduli (E = 30.1 kPa and 10.0 kPa: Tabor 0.23 and 0.49).
+# The first is the stiffer: the others' approach is measured against it.
+CASES = {"E30kPa": 1.0, "E10kPa": 1.0 / 3.0}
+# The softer sphere's contact radius is 0.43 R, outside the small-contact assumption; its
+# finest cloud would take about 8 minutes and the three coarser already show the trend.
+SKIP = {("E10kPa", 44)}
+FULL_CELLS = (16, 22, 32, 44)
+COARSE_CELLS = (16, 22)
+CSV_COLUMNS = ["case", "particles", "tabor", "theory", "a_sim", "a_theory", "rel_error", "wall_s",
+               "sphere_cells", "spacing_m", "maugis_lambda", "contact_radius_theory",
+               "extra_approach_sim", "extra_approach_theory", "extra_approach_rel_error", "steps", "converged", "contact_radius_report"]
+
+
+def variant(cells, factor):
+    """The scene at `cells` across the sphere with both moduli scaled by `factor`."""
+    with open(SCENE, "rb") as f:
+        scene = tomllib.load(f)
+    sphere, block = scene["body"]
+    sphere["cloud"]["cells"] = cells
+    spacing = 2.0 * sphere["cloud"]["radius"] / cells
+    size = block["cloud"]["size"]
+    block["cloud"]["cells"] = [round(size[0] / spacing), round(size[1] / spacing), max(3, round(size[2] / spacing))]
+    for body in (sphere, block):
+        for key in ("mu", "lambda"):
+            body["material"][key] *= factor
+    return scene
+
+
+def seed_at_rest(tension):
+    """examples/adhesion/adhesion.toml relaxed to rest, with or without surface tension."""
+    with open(SEED_SCENE, "rb") as f:
+        scene = tomllib.load(f)
+    with open(SCENE, "rb") as f:
+        scene["integrator"] = tomllib.load(f)["integrator"]
+    scene["output"] = {"every": 1.0}
+    if not tension:
+        scene["term"] = [t for t in scene["term"] if t["type"] != "surface_tension"]
+    return scene
+
+
+def reported_contact_radius(folder):
+    """The contact term's own contact_radius of the run's last history row [m]."""
+    with open(os.path.join(folder, "history.csv")) as f:
+        return float(list(csv.DictReader(f))[-1]["contact_radius"])
+
+
+def run(rkpm, scene, folder, threads):
+    """Runs `scene` into `folder` unless it holds a summary.json; returns the folder."""
+    if os.path.exists(os.path.join(folder, "summary.json")):
+        print(f"{folder}: done before, kept", flush=True)
+        return folder
+    os.makedirs(folder, exist_ok=True)
+    path = folder + ".toml"
+    with open(path, "w") as f:
+        f.write(scene_toml.dumps(scene))
+    print(f"{folder}: running", flush=True)
+    start = time.monotonic()
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_WAIT_POLICY="passive")
+    subprocess.run([rkpm, "run", path, "--out", folder, "--threads", str(threads), "--quiet"], check=True, env=env)
+    with open(os.path.join(folder, "study_wall_seconds"), "w") as f:
+        f.write(f"{time.monotonic() - start:.2f}\n")
+    with open(os.path.join(folder, "study_load"), "w") as f:
+        f.write(" ".join(open("/proc/loadavg").read().split()[:3]) + "\n")
+    return folder
+
+
+def study_row(case, cells, folder, stiffer=None):
+    """The CSV row of one run: its measures against the theory and, given the stiffer
+    case's `compare` at the same resolution, how much further it has come down than that
+    (measured and by the theory; nan without one)."""
+    c = A.compare(folder + ".toml", folder)
+    if stiffer is None:
+        approach = approach_theory = math.nan
+    else:
+        approach = stiffer["core_z"] - c["core_z"]
+        approach_theory = c["approach_theory"] - stiffer["approach_theory"]
+    wall = float(open(os.path.join(folder, "study_wall_seconds")).read())
+    return {
+        "case": case, "particles": c["particles"], "tabor": c["tabor"], "theory": c["theory"],
+        "a_sim": c["a_sim"], "a_theory": c["a_theory"], "rel_error": c["rel_error"], "wall_s": wall,
+        "sphere_cells": cells, "spacing_m": 2.0 * c["R"] / cells, "maugis_lambda": c["maugis_lambda"],
+        "contact_radius_theory": c["contact_radius_theory"], "extra_approach_sim": approach,
+        "extra_approach_theory": approach_theory, "extra_approach_rel_error": approach / approach_theory - 1.0,
+        "compare": c,
+        "steps": c["steps"], "converged": c["converged"], "contact_radius_report": reported_contact_radius(folder),
+    }
+
+
+def fits(rows):
+    """Per case: the Richardson limit of a_sim over the spacings (three finest), its
+    order and error bar, and the limit's error against the theory."""
+    out = {}
+    for case in CASES:
+        mine = [r for r in rows if r["case"] == case]
+        if len(mine) < 3:
+            continue
+        est = richardson([r["spacing_m"] for r in mine], [r["a_sim"] for r in mine])
+        a_theory = mine[0]["a_theory"]
+        out[case] = {"fit": est, "a_theory": a_theory,
+                     "limit_error": est.q_inf / a_theory - 1.0 if est.monotone else math.nan}
+    return out
+
+
+def write_csv(rows, path):
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS, lineterminator="\n")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in CSV_COLUMNS})
+
+
+def nm(x):
+    return "-" if math.isnan(x) else f"{x * 1e9:.1f}"
+
+
+def table(rows, fitted, loads):
+    """The generated Markdown of docs/verification/adhesion.md."""
+    um = 1e6
+    lines = ["| case | sphere cells | particles | Tabor | theory | compressive zone [um] | theory [um] | error | "
+             "further down than E30kPa [nm] | theory [nm] | steps | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in (r for r in rows if r["case"] in CASES):
+        lines.append(f"| {r['case']} | {r['sphere_cells']} | {r['particles']:,} | {r['tabor']:.3f} | {r['theory']} | "
+                     f"{r['a_sim'] * um:.4f} | {r['a_theory'] * um:.4f} | {100 * r['rel_error']:+.2f} % | "
+                     f"{nm(r['extra_approach_sim'])} | {nm(r['extra_approach_theory'])} | {r['steps']} | "
+                     f"{r['wall_s']:.1f} |")
+    lines.append("")
+    for case, f in fitted.items():
+        est = f["fit"]
+        finest = [r for r in rows if r["case"] == case][-1]
+        if est.monotone:
+            lines.append(f"- {case}: Richardson limit of the three finest {est.q_inf * um:.4f} um "
+                         f"+- {est.gci * um:.4f} (grid convergence index of the finest), observed order "
+                         f"{est.order:.2f} in the spacing; the limit is {100 * f['limit_error']:+.2f} % from "
+                         f"{finest['theory']}'s {f['a_theory'] * um:.4f} um; the finest run "
+                         f"{100 * finest['rel_error']:+.2f} % (criterion: within 5 %): "
+                         f"{'met' if abs(finest['rel_error']) <= 0.05 else 'not met'}")
+        else:
+            lines.append(f"- {case}: the three finest do not converge monotonically; spread "
+                         f"{est.gci * um:.4f} um (x 1.25); the finest run {100 * finest['rel_error']:+.2f} % "
+                         f"from {finest['theory']} (criterion: within 5 %): "
+                         f"{'met' if abs(finest['rel_error']) <= 0.05 else 'not met'}")
+    seed = [r for r in rows if r["case"] in SEED_CASES]
+    if seed:
+        lines += ["", "The seed-like scene (examples/adhesion/adhesion.toml) relaxed to rest, against Maugis-Dugdale "
+                  "for a half-space of its substrate's moduli:", "",
+                  "| case | particles | Tabor | compressive zone [um] | MD [um] | error | contact term's contact_radius [um] "
+                  "| MD contact radius a [um] | steps | wall [s] |", "|---|---|---|---|---|---|---|---|---|---|"]
+        for r in seed:
+            lines.append(f"| {r['case']} | {r['particles']:,} | {r['tabor']:.3f} | {r['a_sim'] * um:.4f} | "
+                         f"{r['a_theory'] * um:.4f} | {100 * r['rel_error']:+.2f} % | {r['contact_radius_report'] * um:.3f} | "
+                         f"{r['contact_radius_theory'] * um:.3f} | {r['steps']} | {r['wall_s']:.1f} |")
+        lines.append("")
+    lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
+    return "\n".join(lines) + "\n"
+
+
+def plot(rows, fitted, path):
+    """Error against particles and against wall time: the error against the theory and,
+    where the Richardson fit holds, the estimated discretisation error |a - a_inf|."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for case, marker in zip(CASES, "os"):
+        mine = [r for r in rows if r["case"] == case]
+        tabor = mine[0]["tabor"] if mine else math.nan
+        for ax, key in zip(axes, ("particles", "wall_s")):
+            x = [r[key] for r in mine]
+            ax.loglog(x, [abs(r["rel_error"]) for r in mine], marker + "-",
+                      label=f"{case} (Tabor {tabor:.2f}): |a - theory| / theory")
+            fit = fitted.get(case)
+            if fit and fit["fit"].monotone:
+                ax.loglog(x, [abs(r["a_sim"] - fit["fit"].q_inf) / r["a_theory"] for r in mine], marker + "--",
+                          label=f"{case}: |a - Richardson limit| / theory")
+    for ax, label in zip(axes, ("particles (sphere and block)", "wall time [s], 2 threads")):
+        ax.axhline(0.05, color="grey", lw=0.8, ls=":")
+        ax.set_xlabel(label)
+        ax.set_ylabel("relative error of the compressive-zone radius")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=7)
+    fig.suptitle("Adhered sphere at rest against Maugis-Dugdale (dotted: the 5 % target)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="adhered sphere at rest against contact theory")
+    parser.add_argument("--rkpm", required=True, help="the rkpm program")
+    parser.add_argument("--out", required=True, help="folder for the runs and the results")
+    parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
+    parser.add_argument("--threads", type=int, default=2)
+    args = parser.parse_args(argv)
+    cells_list = COARSE_CELLS if args.coarse else FULL_CELLS
+    rows, loads = [], []
+    stiffest = {}
+    for case, factor in CASES.items():
+        for cells in (c for c in cells_list if (case, c) not in SKIP):
+            folder = run(args.rkpm, variant(cells, factor), os.path.join(args.out, f"{case}_c{cells}"), args.threads)
+            rows.append(study_row(case, cells, folder, stiffest.get(cells)))
+            stiffest.setdefault(cells, rows[-1]["compare"])
+            loads.append(open(os.path.join(folder, "study_load")).read().split()[0])
+            r = rows[-1]
+            print(f"{case} cells {cells}: {r['particles']:,} particles, compressive zone {r['a_sim'] * 1e6:.4f} um "
+                  f"against {r['theory']} {r['a_theory'] * 1e6:.4f} ({100 * r['rel_error']:+.2f} %), further down "
+                  f"than the stiffer {r['extra_approach_sim'] * 1e9:.1f} nm against "
+                  f"{r['extra_approach_theory'] * 1e9:.1f}, {r['wall_s']:.1f} s", flush=True)
+    for case, tension in SEED_CASES.items():
+        folder = run(args.rkpm, seed_at_rest(tension), os.path.join(args.out, case), args.threads)
+        rows.append(study_row(case, seed_at_rest(tension)["body"][0]["cloud"]["cells"], folder))
+        loads.append(open(os.path.join(folder, "study_load")).read().split()[0])
+    fitted = fits(rows)
+    write_csv(rows, os.path.join(args.out, "adhesion_theory.csv"))
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write(table(rows, fitted, loads))
+    plot(rows, fitted, os.path.join(args.out, "adhesion_theory.png"))
+    print(open(os.path.join(args.out, "table.md")).read())
+    if not all(r["converged"] for r in rows):
+        print("adhesion_study: a run did not come to rest (summary.json: converged false)", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
