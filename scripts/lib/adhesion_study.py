@@ -12,24 +12,16 @@ continuum's z0 at 16 cells), comparable with the approaches themselves; on the s
 clouds that offset cancels. A run folder that already holds a summary.json is kept."""
 import argparse
 import csv
-import json
 import math
 import os
-import subprocess
 import sys
-import time
-import tomllib
 
 import adhesion_at_rest as A
 from convergence_fit import richardson
+from study_runs import write_rows, load_scene, run_scene as run, study_load, study_wall_seconds
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "python", "rkpm"))
-import scene_toml  # noqa: E402  (the module's TOML writer; needs no build)
-
-SCENE = os.path.join(ROOT, "examples", "adhesion", "sphere_at_rest.toml")
-SEED_SCENE = os.path.join(ROOT, "examples", "adhesion", "adhesion.toml")
+SCENE = "examples/adhesion/sphere_at_rest.toml"
+SEED_SCENE = "examples/adhesion/adhesion.toml"
 # The seed-like scene taken to rest as the sphere is (relax mode, mass scaling), with its
 # two surface-tension terms and without.
 SEED_CASES = {"seed_tension": True, "seed_no_tension": False}
@@ -48,8 +40,7 @@ CSV_COLUMNS = ["case", "particles", "tabor", "theory", "a_sim", "a_theory", "rel
 
 def variant(cells, factor):
     """The scene at `cells` across the sphere with both moduli scaled by `factor`."""
-    with open(SCENE, "rb") as f:
-        scene = tomllib.load(f)
+    scene = load_scene(SCENE)
     sphere, block = scene["body"]
     sphere["cloud"]["cells"] = cells
     spacing = 2.0 * sphere["cloud"]["radius"] / cells
@@ -63,10 +54,8 @@ def variant(cells, factor):
 
 def seed_at_rest(tension):
     """examples/adhesion/adhesion.toml relaxed to rest, with or without surface tension."""
-    with open(SEED_SCENE, "rb") as f:
-        scene = tomllib.load(f)
-    with open(SCENE, "rb") as f:
-        scene["integrator"] = tomllib.load(f)["integrator"]
+    scene = load_scene(SEED_SCENE)
+    scene["integrator"] = load_scene(SCENE)["integrator"]
     scene["output"] = {"every": 1.0}
     if not tension:
         scene["term"] = [t for t in scene["term"] if t["type"] != "surface_tension"]
@@ -79,26 +68,6 @@ def reported_contact_radius(folder):
         return float(list(csv.DictReader(f))[-1]["contact_radius"])
 
 
-def run(rkpm, scene, folder, threads):
-    """Runs `scene` into `folder` unless it holds a summary.json; returns the folder."""
-    if os.path.exists(os.path.join(folder, "summary.json")):
-        print(f"{folder}: done before, kept", flush=True)
-        return folder
-    os.makedirs(folder, exist_ok=True)
-    path = folder + ".toml"
-    with open(path, "w") as f:
-        f.write(scene_toml.dumps(scene))
-    print(f"{folder}: running", flush=True)
-    start = time.monotonic()
-    env = dict(os.environ, OMP_NUM_THREADS=str(threads), OMP_WAIT_POLICY="passive")
-    subprocess.run([rkpm, "run", path, "--out", folder, "--threads", str(threads), "--quiet"], check=True, env=env)
-    with open(os.path.join(folder, "study_wall_seconds"), "w") as f:
-        f.write(f"{time.monotonic() - start:.2f}\n")
-    with open(os.path.join(folder, "study_load"), "w") as f:
-        f.write(" ".join(open("/proc/loadavg").read().split()[:3]) + "\n")
-    return folder
-
-
 def study_row(case, cells, folder, stiffer=None):
     """The CSV row of one run: its measures against the theory and, given the stiffer
     case's `compare` at the same resolution, how much further it has come down than that
@@ -109,7 +78,7 @@ def study_row(case, cells, folder, stiffer=None):
     else:
         approach = stiffer["core_z"] - c["core_z"]
         approach_theory = c["approach_theory"] - stiffer["approach_theory"]
-    wall = float(open(os.path.join(folder, "study_wall_seconds")).read())
+    wall = study_wall_seconds(folder)
     return {
         "case": case, "particles": c["particles"], "tabor": c["tabor"], "theory": c["theory"],
         "a_sim": c["a_sim"], "a_theory": c["a_theory"], "rel_error": c["rel_error"], "wall_s": wall,
@@ -134,14 +103,6 @@ def fits(rows):
         out[case] = {"fit": est, "a_theory": a_theory,
                      "limit_error": est.q_inf / a_theory - 1.0 if est.monotone else math.nan}
     return out
-
-
-def write_csv(rows, path):
-    with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=CSV_COLUMNS, lineterminator="\n")
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in CSV_COLUMNS})
 
 
 def nm(x):
@@ -234,7 +195,7 @@ def main(argv=None):
             folder = run(args.rkpm, variant(cells, factor), os.path.join(args.out, f"{case}_c{cells}"), args.threads)
             rows.append(study_row(case, cells, folder, stiffest.get(cells)))
             stiffest.setdefault(cells, rows[-1]["compare"])
-            loads.append(open(os.path.join(folder, "study_load")).read().split()[0])
+            loads.append(study_load(folder))
             r = rows[-1]
             print(f"{case} cells {cells}: {r['particles']:,} particles, compressive zone {r['a_sim'] * 1e6:.4f} um "
                   f"against {r['theory']} {r['a_theory'] * 1e6:.4f} ({100 * r['rel_error']:+.2f} %), further down "
@@ -243,9 +204,9 @@ def main(argv=None):
     for case, tension in SEED_CASES.items():
         folder = run(args.rkpm, seed_at_rest(tension), os.path.join(args.out, case), args.threads)
         rows.append(study_row(case, seed_at_rest(tension)["body"][0]["cloud"]["cells"], folder))
-        loads.append(open(os.path.join(folder, "study_load")).read().split()[0])
+        loads.append(study_load(folder))
     fitted = fits(rows)
-    write_csv(rows, os.path.join(args.out, "adhesion_theory.csv"))
+    write_rows(rows, CSV_COLUMNS, os.path.join(args.out, "adhesion_theory.csv"))
     with open(os.path.join(args.out, "table.md"), "w") as f:
         f.write(table(rows, fitted, loads))
     plot(rows, fitted, os.path.join(args.out, "adhesion_theory.png"))

@@ -108,7 +108,7 @@ trap 'rm -f "$table"' EXIT
 } > "$table"
 cat "$table"
 if [ "$coarse" = 0 ]; then
-  rkpm_replace_generated "$doc" "$table"
+  rkpm_replace_generated "$doc" "$table" "scripts/study crawling -->"
   echo "wrote $csv, $figures/crawling_drift.png and the table of $doc"
 else
   echo "wrote $csv and $figures/crawling_drift.png (coarse: docs untouched)"

@@ -14,6 +14,7 @@ import pytest
 
 import adhesion_at_rest as A
 import adhesion_study as S
+from study_runs import scene_toml
 
 RKPM = os.environ.get("RKPM_BIN")
 
@@ -23,7 +24,7 @@ RKPM = os.environ.get("RKPM_BIN")
 def test_compressive_zone_within_five_percent_of_maugis_dugdale(tmp_path, case, cells):
     folder = str(tmp_path / f"{case}_c{cells}")
     with open(folder + ".toml", "w") as f:
-        f.write(S.scene_toml.dumps(S.variant(cells, S.CASES[case])))
+        f.write(scene_toml.dumps(S.variant(cells, S.CASES[case])))
     subprocess.run([RKPM, "run", folder + ".toml", "--out", folder, "--threads", "2", "--quiet"], check=True,
                    env=dict(os.environ, OMP_WAIT_POLICY="passive"))
     c = A.compare(folder + ".toml", folder)

@@ -1,0 +1,179 @@
+"""The crawling scene's drift at several resolutions of cell and substrate together (the
+driver of `scripts/study crawling-convergence`; its header says what it writes).
+
+Each resolution is examples/crawling/crawling.toml with the cell's `cells` (odd, so that
+the surface-normal director is defined at the centre) and the block's cells scaled with
+it (lateral and vertical spacing kept at the shipped ratio to the cell's, 1.59), the
+contact law unchanged (s0 = 0.75 um: the block's spacing stays below 1.25 s0). At each,
+the graded substrate (Eq. 18, stiffer towards +y), the uniform one (the graded mean) and
+the mirrored gradient. A run folder that already holds a summary.json is kept."""
+import argparse
+import csv
+import os
+import sys
+
+import numpy as np
+
+from convergence_fit import richardson
+from study_runs import write_rows, load_scene, run_scene, study_load, study_wall_seconds
+
+SCENE = "examples/crawling/crawling.toml"
+# run: (grade_a, grade_b) of Eq. 18's factor grade_a (y - y_min) / L0 + grade_b.
+RUNS = {"graded": (4.0, 0.5), "uniform": (0.0, 2.5), "mirrored": (-4.0, 4.5)}
+FULL_CELLS = (17, 21, 25, 29)
+COARSE_CELLS = (17, 21)
+SHIPPED_CELLS = 17
+CSV_COLUMNS = ["run", "cells", "particles", "drift_m", "velocity_m_per_s", "wall_s", "substrate_cells",
+               "velocity_earlier_m_per_s", "drift_x_m", "t_end_s", "steps", "energy_error"]
+
+
+def variant(cells, grading):
+    """The scene at `cells` across the cell, the block refined with it, and `grading`."""
+    scene = load_scene(SCENE)
+    cell, block = scene["body"]
+    shipped = block["cloud"]["cells"]
+    cell["cloud"]["cells"] = cells
+    block["cloud"]["cells"] = [round(n * cells / SHIPPED_CELLS) for n in shipped]
+    block["material"]["grade_a"], block["material"]["grade_b"] = grading
+    scene["scene"]["name"] = f"crawling_c{cells}"
+    return scene
+
+
+def history(folder):
+    with open(os.path.join(folder, "history.csv")) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in ("time", "centroid_x", "centroid_y", "energy_error")}
+
+
+def slope(t, y, lo, hi):
+    """The least-squares slope of y(t) over lo <= t <= hi."""
+    m = (t >= lo) & (t <= hi)
+    return float(np.polyfit(t[m], y[m], 1)[0])
+
+
+def measure(run, cells, folder, scene):
+    """The CSV row of one run: drift along y at the end, the drift velocity over the last
+    quarter of the run and over the quarter before (steady when they agree)."""
+    import json
+    h = history(folder)
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    t, y = h["time"], h["centroid_y"] - h["centroid_y"][0]
+    T = t[-1]
+    return {"run": run, "cells": cells, "particles": summary["total_particles"], "drift_m": float(y[-1]),
+            "velocity_m_per_s": slope(t, y, 0.75 * T, T), "wall_s": study_wall_seconds(folder),
+            "substrate_cells": "x".join(str(n) for n in scene["body"][1]["cloud"]["cells"]),
+            "velocity_earlier_m_per_s": slope(t, y, 0.5 * T, 0.75 * T),
+            "drift_x_m": float(h["centroid_x"][-1] - h["centroid_x"][0]), "t_end_s": float(T),
+            "steps": summary["steps"], "energy_error": float(abs(h["energy_error"][-1]))}
+
+
+def estimates(rows):
+    """Richardson estimates of the graded drift and velocity over the cell's spacing."""
+    graded = [r for r in rows if r["run"] == "graded"]
+    if len(graded) < 3:
+        return {}
+    h = [10e-6 / r["cells"] for r in graded]
+    return {key: richardson(h, [r[key] for r in graded]) for key in ("drift_m", "velocity_m_per_s")}
+
+
+def table(rows, est, loads):
+    lines = ["| cells | substrate cells | particles | run | drift along y [nm] | velocity, last quarter [nm/us] | "
+             "quarter before [nm/us] | drift along x [nm] | steps | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append(f"| {r['cells']} | {r['substrate_cells']} | {r['particles']:,} | {r['run']} | "
+                     f"{r['drift_m'] * 1e9:.2f} | {r['velocity_m_per_s'] * 1e3:.3f} | "
+                     f"{r['velocity_earlier_m_per_s'] * 1e3:.3f} | {r['drift_x_m'] * 1e9:.2g} | {r['steps']} | "
+                     f"{r['wall_s']:.0f} |")
+    lines.append("")
+    by = {(r["run"], r["cells"]): r for r in rows}
+    cells = sorted({r["cells"] for r in rows})
+    for c in cells:
+        g, u, m = by[("graded", c)], by[("uniform", c)], by[("mirrored", c)]
+        lines.append(f"- {c} cells: |uniform| / |graded| drift {abs(u['drift_m']) / abs(g['drift_m']):.2g}, "
+                     f"mirrored / graded {m['drift_m'] / g['drift_m']:.4f} (criteria: < 0.1; -1)")
+    if len(cells) >= 2:
+        a, b = by[("graded", cells[-2])], by[("graded", cells[-1])]
+        for key, name in (("drift_m", "drift"), ("velocity_m_per_s", "velocity")):
+            d = abs(b[key] - a[key]) / abs(b[key])
+            lines.append(f"- graded {name}, two finest: {a[key] * 1e9 if key == 'drift_m' else a[key] * 1e3:.3f} and "
+                         f"{b[key] * 1e9 if key == 'drift_m' else b[key] * 1e3:.3f} "
+                         f"{'nm' if key == 'drift_m' else 'nm/us'}, {100 * d:.1f} % apart (criterion: within 10 %): "
+                         f"{'met' if d <= 0.1 else 'not met'}")
+    for key, e in est.items():
+        scale, unit = (1e9, "nm") if key == "drift_m" else (1e3, "nm/us")
+        if e.monotone:
+            lines.append(f"- Richardson estimate of the graded {key.split('_')[0]}: {e.q_inf * scale:.3f} "
+                         f"+- {e.gci * scale:.3f} {unit} (finest run's grid convergence index), observed order "
+                         f"{e.order:.2f}")
+        else:
+            lines.append(f"- graded {key.split('_')[0]}: the three finest do not converge monotonically "
+                         f"(spread x 1.25: {e.gci * scale:.3f} {unit}); no Richardson estimate")
+    lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
+    return "\n".join(lines) + "\n"
+
+
+def plot(rows, est, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for run, marker in zip(RUNS, "o^v"):
+        mine = [r for r in rows if r["run"] == run]
+        axes[0].plot([r["particles"] for r in mine], [r["drift_m"] * 1e9 for r in mine], marker + "-", label=run)
+    axes[0].set_xscale("log")
+    axes[0].set_xlabel("particles (cell and substrate)")
+    axes[0].set_ylabel("drift along y at the end [nm]")
+    axes[0].axhline(0.0, color="grey", lw=0.8)
+    axes[0].legend()
+    graded = [r for r in rows if r["run"] == "graded"]
+    e = est.get("drift_m")
+    if e is not None and e.monotone:
+        reference, label = e.q_inf, f"|drift - Richardson estimate ({e.q_inf * 1e9:.2f} nm)|"
+    else:
+        reference, label = graded[-1]["drift_m"], "|drift - finest run's drift| (no Richardson estimate)"
+    shown = [r for r in graded if r["drift_m"] != reference]
+    axes[1].loglog([r["wall_s"] for r in shown], [abs(r["drift_m"] - reference) * 1e9 for r in shown], "o-",
+                   label=label)
+    if e is not None:
+        axes[1].errorbar([graded[-1]["wall_s"]], [abs(graded[-1]["drift_m"] - reference) * 1e9 or e.gci * 1e9],
+                         yerr=[[0.0], [e.gci * 1e9]], fmt="none", ecolor="grey", capsize=4,
+                         label="finest run's grid convergence index")
+    axes[1].set_xlabel("wall time of the graded run [s], 2 threads")
+    axes[1].set_ylabel("estimated error of the graded drift [nm]")
+    axes[1].grid(True, which="both", alpha=0.3)
+    axes[1].legend(fontsize=8)
+    fig.suptitle("Crawling on a graded substrate: drift against resolution and run time")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description="crawling drift at several resolutions")
+    parser.add_argument("--rkpm", required=True)
+    parser.add_argument("--out", required=True)
+    parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
+    parser.add_argument("--threads", type=int, default=2)
+    args = parser.parse_args(argv)
+    rows, loads = [], []
+    for cells in (COARSE_CELLS if args.coarse else FULL_CELLS):
+        for run, grading in RUNS.items():
+            scene = variant(cells, grading)
+            folder = run_scene(args.rkpm, scene, os.path.join(args.out, f"{run}_c{cells}"), args.threads)
+            rows.append(measure(run, cells, folder, scene))
+            loads.append(study_load(folder))
+            r = rows[-1]
+            print(f"{run} {cells} cells: {r['particles']:,} particles, drift {r['drift_m'] * 1e9:.2f} nm, velocity "
+                  f"{r['velocity_m_per_s'] * 1e3:.3f} nm/us (before: {r['velocity_earlier_m_per_s'] * 1e3:.3f}), "
+                  f"{r['wall_s']:.0f} s", flush=True)
+    est = estimates(rows)
+    write_rows(rows, CSV_COLUMNS, os.path.join(args.out, "crawling_convergence.csv"))
+    with open(os.path.join(args.out, "table.md"), "w") as f:
+        f.write(table(rows, est, loads))
+    plot(rows, est, os.path.join(args.out, "crawling_convergence.png"))
+    print(open(os.path.join(args.out, "table.md")).read())
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Crawling drift at four resolutions of cell and substrate together, with its controls.
+# Runs examples/crawling/crawling.toml with 17, 21, 25 and 29 cells across the cell and
+# the block refined with it (40 x 40 x 4 to 68 x 68 x 7 cells), each on the graded,
+# uniform and mirrored substrate (scripts/lib/crawling_convergence.py), and writes
+#   docs/figures/crawling_convergence.csv   one row per run and resolution
+#   docs/figures/crawling_convergence.png   drift against particles; its estimated error
+#                                           against wall time
+#   the generated table (crawling-convergence) of docs/verification/crawling.md
+# The runs go to out/crawling-convergence/ (a run folder holding a summary.json is kept:
+# delete it to rerun). About 50 minutes on 2 cores.
+# Usage: scripts/study crawling-convergence [--coarse]
+#   --coarse: 17 and 21 cells only (about 8 minutes); docs untouched.
+# RKPM_THREADS sets the thread count (default 2); RKPM_BIN names a built rkpm.
+set -euo pipefail
+script_name="study crawling-convergence"
+source "$(dirname "$0")/../lib/common.sh"
+rkpm_help_if_asked "$@"
+here=$rkpm_root
+out=$rkpm_out_root/crawling-convergence
+coarse=()
+for arg in "$@"; do
+  case "$arg" in
+    --coarse) coarse=(--coarse) ;;
+    *) rkpm_die "unknown argument $arg (expected --coarse)" ;;
+  esac
+done
+rkpm_need_python_modules numpy scipy matplotlib
+rkpm=$(rkpm_program)
+mkdir -p "$out"
+PYTHONPATH="$here/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$here/scripts/lib/crawling_convergence.py" \
+  --rkpm "$rkpm" --out "$out" --threads "${RKPM_THREADS:-2}" "${coarse[@]}"
+if [ ${#coarse[@]} -eq 0 ]; then
+  cp "$out/crawling_convergence.csv" "$out/crawling_convergence.png" "$here/docs/figures/"
+  rkpm_replace_generated "$here/docs/verification/crawling.md" "$out/table.md" "scripts/study crawling-convergence -->"
+fi
