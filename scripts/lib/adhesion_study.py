@@ -10,7 +10,6 @@ from where the undeformed sphere would rest, it would carry the clouds' own offs
 against the block's lattice (a nearly rigid sphere on this block rests 51 nm above the
 continuum's z0 at 16 cells), comparable with the approaches themselves; on the same
 clouds that offset cancels. A run folder that already holds a summary.json is kept."""
-import argparse
 import csv
 import math
 import os
@@ -18,7 +17,7 @@ import sys
 
 import adhesion_at_rest as A
 from convergence_fit import richardson
-from study_runs import write_rows, load_scene, run_scene as run, study_load, study_wall_seconds
+from study_runs import study_parser, write_results, load_scene, run_scene, study_load, study_wall_seconds
 
 SCENE = "examples/adhesion/sphere_at_rest.toml"
 SEED_SCENE = "examples/adhesion/adhesion.toml"
@@ -181,18 +180,15 @@ def plot(rows, fitted, path):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description="adhered sphere at rest against contact theory")
-    parser.add_argument("--rkpm", required=True, help="the rkpm program")
-    parser.add_argument("--out", required=True, help="folder for the runs and the results")
+    parser = study_parser("adhered sphere at rest against contact theory")
     parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
-    parser.add_argument("--threads", type=int, default=2)
     args = parser.parse_args(argv)
     cells_list = COARSE_CELLS if args.coarse else FULL_CELLS
     rows, loads = [], []
     stiffest = {}
     for case, factor in CASES.items():
         for cells in (c for c in cells_list if (case, c) not in SKIP):
-            folder = run(args.rkpm, variant(cells, factor), os.path.join(args.out, f"{case}_c{cells}"), args.threads)
+            folder = run_scene(args.rkpm, variant(cells, factor), os.path.join(args.out, f"{case}_c{cells}"), args.threads)
             rows.append(study_row(case, cells, folder, stiffest.get(cells)))
             stiffest.setdefault(cells, rows[-1]["compare"])
             loads.append(study_load(folder))
@@ -202,15 +198,13 @@ def main(argv=None):
                   f"than the stiffer {r['extra_approach_sim'] * 1e9:.1f} nm against "
                   f"{r['extra_approach_theory'] * 1e9:.1f}, {r['wall_s']:.1f} s", flush=True)
     for case, tension in SEED_CASES.items():
-        folder = run(args.rkpm, seed_at_rest(tension), os.path.join(args.out, case), args.threads)
-        rows.append(study_row(case, seed_at_rest(tension)["body"][0]["cloud"]["cells"], folder))
+        scene = seed_at_rest(tension)
+        folder = run_scene(args.rkpm, scene, os.path.join(args.out, case), args.threads)
+        rows.append(study_row(case, scene["body"][0]["cloud"]["cells"], folder))
         loads.append(study_load(folder))
     fitted = fits(rows)
-    write_rows(rows, CSV_COLUMNS, os.path.join(args.out, "adhesion_theory.csv"))
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(table(rows, fitted, loads))
-    plot(rows, fitted, os.path.join(args.out, "adhesion_theory.png"))
-    print(open(os.path.join(args.out, "table.md")).read())
+    write_results(args.out, "adhesion_theory", rows, CSV_COLUMNS, table(rows, fitted, loads),
+                  lambda path: plot(rows, fitted, path))
     if not all(r["converged"] for r in rows):
         print("adhesion_study: a run did not come to rest (summary.json: converged false)", file=sys.stderr)
         return 1

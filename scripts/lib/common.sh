@@ -79,3 +79,22 @@ rkpm_replace_generated() {
     !skip { print }' "$doc" > "$doc.tmp"
   mv "$doc.tmp" "$doc"
 }
+
+# rkpm_python_study DRIVER OUT STEM PAGE KEY FULL [ARGS...]: runs a study driver of
+# scripts/lib (a Python file taking --rkpm --out --threads and ARGS; study_runs.py) with
+# Debian's python3, writing OUT/STEM.csv, OUT/STEM.png and OUT/table.md; when FULL is 1,
+# copies the CSV and PNG into docs/figures/ and puts the table into docs/PAGE's
+# generated block holding KEY.
+rkpm_python_study() {
+  local driver=$1 out=$2 stem=$3 page=$4 key=$5 full=$6 rkpm
+  shift 6
+  rkpm_need_python_modules numpy scipy matplotlib
+  rkpm=$(rkpm_program)
+  mkdir -p "$out"
+  PYTHONPATH="$rkpm_root/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$rkpm_root/scripts/lib/$driver" \
+    --rkpm "$rkpm" --out "$out" --threads "${RKPM_THREADS:-2}" "$@"
+  if [ "$full" = 1 ]; then
+    cp "$out/$stem.csv" "$out/$stem.png" "$rkpm_root/docs/figures/"
+    rkpm_replace_generated "$rkpm_root/docs/$page" "$out/table.md" "$key"
+  fi
+}

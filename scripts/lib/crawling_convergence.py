@@ -7,15 +7,15 @@ it (lateral and vertical spacing kept at the shipped ratio to the cell's, 1.59),
 contact law unchanged (s0 = 0.75 um: the block's spacing stays below 1.25 s0). At each,
 the graded substrate (Eq. 18, stiffer towards +y), the uniform one (the graded mean) and
 the mirrored gradient. A run folder that already holds a summary.json is kept."""
-import argparse
 import csv
+import json
 import os
 import sys
 
 import numpy as np
 
 from convergence_fit import richardson
-from study_runs import write_rows, load_scene, run_scene, study_load, study_wall_seconds
+from study_runs import study_parser, write_results, load_scene, run_scene, study_load, study_wall_seconds
 
 SCENE = "examples/crawling/crawling.toml"
 # run: (grade_a, grade_b) of Eq. 18's factor grade_a (y - y_min) / L0 + grade_b.
@@ -54,7 +54,6 @@ def slope(t, y, lo, hi):
 def measure(run, cells, folder, scene):
     """The CSV row of one run: drift along y at the end, the drift velocity over the last
     quarter of the run and over the quarter before (steady when they agree)."""
-    import json
     h = history(folder)
     summary = json.load(open(os.path.join(folder, "summary.json")))
     t, y = h["time"], h["centroid_y"] - h["centroid_y"][0]
@@ -149,11 +148,8 @@ def plot(rows, est, path):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description="crawling drift at several resolutions")
-    parser.add_argument("--rkpm", required=True)
-    parser.add_argument("--out", required=True)
+    parser = study_parser("crawling drift at several resolutions")
     parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
-    parser.add_argument("--threads", type=int, default=2)
     args = parser.parse_args(argv)
     rows, loads = [], []
     for cells in (COARSE_CELLS if args.coarse else FULL_CELLS):
@@ -167,11 +163,8 @@ def main(argv=None):
                   f"{r['velocity_m_per_s'] * 1e3:.3f} nm/us (before: {r['velocity_earlier_m_per_s'] * 1e3:.3f}), "
                   f"{r['wall_s']:.0f} s", flush=True)
     est = estimates(rows)
-    write_rows(rows, CSV_COLUMNS, os.path.join(args.out, "crawling_convergence.csv"))
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(table(rows, est, loads))
-    plot(rows, est, os.path.join(args.out, "crawling_convergence.png"))
-    print(open(os.path.join(args.out, "table.md")).read())
+    write_results(args.out, "crawling_convergence", rows, CSV_COLUMNS, table(rows, est, loads),
+                  lambda path: plot(rows, est, path))
     return 0
 
 

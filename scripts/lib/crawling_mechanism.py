@@ -5,13 +5,12 @@ Every variant is examples/crawling/crawling.toml as shipped (17 cells, graded by
 passive, linear stiffness law, surface tension, damping 5e5 /s) with one change. The
 drift velocity is the slope of the centroid's y over the run's last quarter
 (crawling_convergence.measure)."""
-import argparse
 import json
 import os
 import sys
 
 import crawling_convergence as C
-from study_runs import write_rows, load_scene, run_scene, study_load
+from study_runs import study_parser, write_results, load_scene, run_scene, study_load
 
 SHIPPED = "examples/crawling/crawling.toml"
 
@@ -122,10 +121,7 @@ def plot(rows, path):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description="the crawling cell with one ingredient changed at a time")
-    parser.add_argument("--rkpm", required=True)
-    parser.add_argument("--out", required=True)
-    parser.add_argument("--threads", type=int, default=2)
+    parser = study_parser("the crawling cell with one ingredient changed at a time")
     parser.add_argument("--only", nargs="*", help="run only these variants (and the shipped one)")
     args = parser.parse_args(argv)
     names = [n for n in VARIANTS if not args.only or n == "shipped" or n in args.only]
@@ -139,11 +135,8 @@ def main(argv=None):
         loads.append(study_load(folder))
         print(f"{name}: drift {r['drift_m'] * 1e9:.2f} nm, velocity {r['velocity_m_per_s'] * 1e3:.3f} nm/us "
               f"(before: {r['velocity_earlier_m_per_s'] * 1e3:.3f}), {r['wall_s']:.0f} s", flush=True)
-    write_rows(rows, CSV_COLUMNS, os.path.join(args.out, "crawling_mechanism.csv"))
-    with open(os.path.join(args.out, "table.md"), "w") as f:
-        f.write(table(rows, loads))
-    plot(rows, os.path.join(args.out, "crawling_mechanism.png"))
-    print(open(os.path.join(args.out, "table.md")).read())
+    write_results(args.out, "crawling_mechanism", rows, CSV_COLUMNS, table(rows, loads),
+                  lambda path: plot(rows, path))
     return 0
 
 

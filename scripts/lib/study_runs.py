@@ -65,3 +65,24 @@ def write_rows(rows, columns, path):
         writer.writeheader()
         for r in rows:
             writer.writerow({k: (f"{r[k]:.6g}" if isinstance(r[k], float) else r[k]) for k in columns})
+
+
+def study_parser(description):
+    """The arguments every study driver takes (scripts/lib/common.sh, rkpm_python_study):
+    --rkpm the program, --out the folder for the runs and results, --threads."""
+    import argparse
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--rkpm", required=True, help="the rkpm program")
+    parser.add_argument("--out", required=True, help="folder for the runs and the results")
+    parser.add_argument("--threads", type=int, default=2)
+    return parser
+
+
+def write_results(out, stem, rows, columns, table_text, plot):
+    """A study's results in `out`: STEM.csv (`write_rows`), table.md and STEM.png drawn by
+    plot(path); prints the table."""
+    write_rows(rows, columns, os.path.join(out, f"{stem}.csv"))
+    with open(os.path.join(out, "table.md"), "w") as f:
+        f.write(table_text)
+    plot(os.path.join(out, f"{stem}.png"))
+    print(table_text)

@@ -18,7 +18,6 @@ set -euo pipefail
 script_name="study adhesion-theory"
 source "$(dirname "$0")/../lib/common.sh"
 rkpm_help_if_asked "$@"
-here=$rkpm_root
 out=$rkpm_out_root/adhesion-theory
 coarse=()
 for arg in "$@"; do
@@ -27,12 +26,6 @@ for arg in "$@"; do
     *) rkpm_die "unknown argument $arg (expected --coarse)" ;;
   esac
 done
-rkpm_need_python_modules numpy scipy matplotlib
-rkpm=$(rkpm_program)
-mkdir -p "$out"
-PYTHONPATH="$here/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$here/scripts/lib/adhesion_study.py" \
-  --rkpm "$rkpm" --out "$out" --threads "${RKPM_THREADS:-2}" "${coarse[@]}"
-if [ ${#coarse[@]} -eq 0 ]; then
-  cp "$out/adhesion_theory.csv" "$out/adhesion_theory.png" "$here/docs/figures/"
-  rkpm_replace_generated "$here/docs/verification/adhesion.md" "$out/table.md" "adhesion-theory"
-fi
+full=1
+[ ${#coarse[@]} -eq 0 ] || full=0
+rkpm_python_study adhesion_study.py "$out" adhesion_theory verification/adhesion.md "scripts/study adhesion-theory -->" "$full" "${coarse[@]}"

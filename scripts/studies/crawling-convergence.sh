@@ -16,7 +16,6 @@ set -euo pipefail
 script_name="study crawling-convergence"
 source "$(dirname "$0")/../lib/common.sh"
 rkpm_help_if_asked "$@"
-here=$rkpm_root
 out=$rkpm_out_root/crawling-convergence
 coarse=()
 for arg in "$@"; do
@@ -25,12 +24,6 @@ for arg in "$@"; do
     *) rkpm_die "unknown argument $arg (expected --coarse)" ;;
   esac
 done
-rkpm_need_python_modules numpy scipy matplotlib
-rkpm=$(rkpm_program)
-mkdir -p "$out"
-PYTHONPATH="$here/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$here/scripts/lib/crawling_convergence.py" \
-  --rkpm "$rkpm" --out "$out" --threads "${RKPM_THREADS:-2}" "${coarse[@]}"
-if [ ${#coarse[@]} -eq 0 ]; then
-  cp "$out/crawling_convergence.csv" "$out/crawling_convergence.png" "$here/docs/figures/"
-  rkpm_replace_generated "$here/docs/verification/crawling.md" "$out/table.md" "scripts/study crawling-convergence -->"
-fi
+full=1
+[ ${#coarse[@]} -eq 0 ] || full=0
+rkpm_python_study crawling_convergence.py "$out" crawling_convergence verification/crawling.md "scripts/study crawling-convergence -->" "$full" "${coarse[@]}"

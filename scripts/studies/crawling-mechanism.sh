@@ -16,19 +16,12 @@ set -euo pipefail
 script_name="study crawling-mechanism"
 source "$(dirname "$0")/../lib/common.sh"
 rkpm_help_if_asked "$@"
-here=$rkpm_root
 out=$rkpm_out_root/crawling-mechanism
 only=()
 if [ $# -gt 0 ]; then
   [ "$1" = --only ] || rkpm_die "unknown argument $1 (expected --only VARIANT...)"
   only=("$@")
 fi
-rkpm_need_python_modules numpy scipy matplotlib
-rkpm=$(rkpm_program)
-mkdir -p "$out"
-PYTHONPATH="$here/scripts/lib" PYTHONDONTWRITEBYTECODE=1 /usr/bin/python3 "$here/scripts/lib/crawling_mechanism.py" \
-  --rkpm "$rkpm" --out "$out" --threads "${RKPM_THREADS:-2}" "${only[@]}"
-if [ ${#only[@]} -eq 0 ]; then
-  cp "$out/crawling_mechanism.csv" "$out/crawling_mechanism.png" "$here/docs/figures/"
-  rkpm_replace_generated "$here/docs/verification/crawling.md" "$out/table.md" "scripts/study crawling-mechanism -->"
-fi
+full=1
+[ ${#only[@]} -eq 0 ] || full=0
+rkpm_python_study crawling_mechanism.py "$out" crawling_mechanism verification/crawling.md "scripts/study crawling-mechanism -->" "$full" "${only[@]}"
