@@ -24,9 +24,9 @@ SEED_SCENE = "examples/adhesion/adhesion.toml"
 # The seed-like scene taken to rest as the sphere is (relax mode, mass scaling), with its
 # two surface-tension terms and without.
 SEED_CASES = {"seed_tension": True, "seed_no_tension": False}
-# name: factor on both bodies' moduli (E = 30.1 kPa and 10.0 kPa: Tabor 0.23 and 0.49).
-# The first is the stiffer: the others' approach is measured against it.
-CASES = {"E30kPa": 1.0, "E10kPa": 1.0 / 3.0}
+# name: factor on both bodies' moduli (E = 30.1 kPa, 10.0 kPa and 90.3 kPa: Tabor 0.23,
+# 0.49 and 0.11). The others' approach is measured against the first.
+CASES = {"E30kPa": 1.0, "E10kPa": 1.0 / 3.0, "E90kPa": 3.0}
 # The softer sphere's contact radius is 0.43 R, outside the small-contact assumption; its
 # finest cloud would take about 8 minutes and the three coarser already show the trend.
 SKIP = {("E10kPa", 44)}
@@ -157,7 +157,7 @@ def plot(rows, fitted, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    for case, marker in zip(CASES, "os"):
+    for case, marker in zip(CASES, "os^"):
         mine = [r for r in rows if r["case"] == case]
         tabor = mine[0]["tabor"] if mine else math.nan
         for ax, key in zip(axes, ("particles", "wall_s")):
