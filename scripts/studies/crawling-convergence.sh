@@ -9,21 +9,26 @@
 #   the generated table (crawling-convergence) of docs/verification/crawling.md
 # The runs go to out/crawling-convergence/ (a run folder holding a summary.json is kept:
 # delete it to rerun). About 50 minutes on 2 cores.
-# Usage: scripts/study crawling-convergence [--coarse]
+# Usage: scripts/study crawling-convergence [--coarse] [--long]
 #   --coarse: 17 and 21 cells only (about 8 minutes); docs untouched.
+#   --long: the graded runs alone, to 30 us instead of 12 (about 30 minutes), writing
+#           docs/figures/crawling_convergence_long.{csv,png} and the generated table
+#           (crawling-convergence --long) of docs/verification/crawling.md.
 # RKPM_THREADS sets the thread count (default 2); RKPM_BIN names a built rkpm.
 set -euo pipefail
 script_name="study crawling-convergence"
 source "$(dirname "$0")/../lib/common.sh"
 rkpm_help_if_asked "$@"
 out=$rkpm_out_root/crawling-convergence
-coarse=()
+options=()
+full=1
+stem=crawling_convergence
+key="scripts/study crawling-convergence -->"
 for arg in "$@"; do
   case "$arg" in
-    --coarse) coarse=(--coarse) ;;
-    *) rkpm_die "unknown argument $arg (expected --coarse)" ;;
+    --coarse) options+=(--coarse); full=0 ;;
+    --long) options+=(--long); stem=crawling_convergence_long; key="scripts/study crawling-convergence --long -->" ;;
+    *) rkpm_die "unknown argument $arg (expected --coarse or --long)" ;;
   esac
 done
-full=1
-[ ${#coarse[@]} -eq 0 ] || full=0
-rkpm_python_study crawling_convergence.py "$out" crawling_convergence verification/crawling.md "scripts/study crawling-convergence -->" "$full" "${coarse[@]}"
+rkpm_python_study crawling_convergence.py "$out" "$stem" verification/crawling.md "$key" "$full" "${options[@]}"
