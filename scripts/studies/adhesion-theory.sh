@@ -10,7 +10,7 @@
 #   docs/figures/adhesion_theory.png   error against particles and against wall time
 #   the generated table of docs/verification/adhesion.md
 # The runs go to out/adhesion-theory/ (a run folder holding a summary.json is kept:
-# delete it to rerun). About 30 minutes on 2 cores.
+# delete it to rerun). About 20 minutes on 2 cores.
 # Usage: scripts/study adhesion-theory [--coarse]
 #   --coarse: 16 and 22 cells only (about 1 minute); docs untouched.
 # RKPM_THREADS sets the thread count (default 2); RKPM_BIN names a built rkpm.
