@@ -1,11 +1,11 @@
 """The adhered sphere at rest against adhesive contact theory, at several resolutions and
-two moduli (the driver of `scripts/study adhesion-theory`; its header says what it
+three moduli (the driver of `scripts/study adhesion-theory`; its header says what it
 writes).
 
 Each run is examples/adhesion/sphere_at_rest.toml with the sphere's `cells` (the block's
 cells follow, spacing matched) and both bodies' moduli scaled by the case's factor (the
 block stays 100 times stiffer). The approach is compared as a difference: how much
-further the softer sphere comes down than the stiffer one on the same clouds. Measured
+further each sphere comes down than the reference (30 kPa) one on the same clouds. Measured
 from where the undeformed sphere would rest, it would carry the clouds' own offset
 against the block's lattice (a nearly rigid sphere on this block rests 51 nm above the
 continuum's z0 at 16 cells), comparable with the approaches themselves; on the same
@@ -67,16 +67,16 @@ def reported_contact_radius(folder):
         return float(list(csv.DictReader(f))[-1]["contact_radius"])
 
 
-def study_row(case, cells, folder, stiffer=None):
-    """The CSV row of one run: its measures against the theory and, given the stiffer
+def study_row(case, cells, folder, reference=None):
+    """The CSV row of one run: its measures against the theory and, given the reference
     case's `compare` at the same resolution, how much further it has come down than that
     (measured and by the theory; nan without one)."""
     c = A.compare(folder + ".toml", folder)
-    if stiffer is None:
+    if reference is None:
         approach = approach_theory = math.nan
     else:
-        approach = stiffer["core_z"] - c["core_z"]
-        approach_theory = c["approach_theory"] - stiffer["approach_theory"]
+        approach = reference["core_z"] - c["core_z"]
+        approach_theory = c["approach_theory"] - reference["approach_theory"]
     wall = study_wall_seconds(folder)
     return {
         "case": case, "particles": c["particles"], "tabor": c["tabor"], "theory": c["theory"],
@@ -185,17 +185,17 @@ def main(argv=None):
     args = parser.parse_args(argv)
     cells_list = COARSE_CELLS if args.coarse else FULL_CELLS
     rows, loads = [], []
-    stiffest = {}
+    reference = {}  # per resolution: the first case's compare()
     for case, factor in CASES.items():
         for cells in (c for c in cells_list if (case, c) not in SKIP):
             folder = run_scene(args.rkpm, variant(cells, factor), os.path.join(args.out, f"{case}_c{cells}"), args.threads)
-            rows.append(study_row(case, cells, folder, stiffest.get(cells)))
-            stiffest.setdefault(cells, rows[-1]["compare"])
+            rows.append(study_row(case, cells, folder, reference.get(cells)))
+            reference.setdefault(cells, rows[-1]["compare"])
             loads.append(study_load(folder))
             r = rows[-1]
             print(f"{case} cells {cells}: {r['particles']:,} particles, compressive zone {r['a_sim'] * 1e6:.4f} um "
                   f"against {r['theory']} {r['a_theory'] * 1e6:.4f} ({100 * r['rel_error']:+.2f} %), further down "
-                  f"than the stiffer {r['extra_approach_sim'] * 1e9:.1f} nm against "
+                  f"than {next(iter(CASES))} {r['extra_approach_sim'] * 1e9:.1f} nm against "
                   f"{r['extra_approach_theory'] * 1e9:.1f}, {r['wall_s']:.1f} s", flush=True)
     for case, tension in SEED_CASES.items():
         scene = seed_at_rest(tension)
