@@ -47,6 +47,7 @@
 #include "rkpm/rk/operators.hpp"
 
 #include <cstring>
+#include <emmintrin.h>
 #include <type_traits>
 #include <vector>
 
@@ -65,6 +66,7 @@ inline constexpr bool kVectorRows = false;
 constexpr int kWidth = 4;
 using Doubles = double __attribute__((vector_size(kWidth * sizeof(double))));
 using Floats = float __attribute__((vector_size(kWidth * sizeof(float))));
+using Pairs = double __attribute__((vector_size(2 * sizeof(double))));
 
 inline Doubles broadcast(double x) { return Doubles{x, x, x, x}; }
 
@@ -132,8 +134,41 @@ void row_gradients(const Index* col, const float* b, Index n, const ValueA& valu
     }
     ga << a0[0], a1[0], a2[0], a0[1], a1[1], a2[1], a0[2], a1[2], a2[2];
     if constexpr (two) *gb << b0[0], b1[0], b2[0], b0[1], b1[1], b2[1], b0[2], b1[2], b2[2];
+  } else if constexpr (two) {
+    // Two fields on two-lane registers: the six components of v_k - v_L in three pairs
+    // (a_x a_y | a_z b_x | b_y b_z), each pair times each component of b~_k into its own
+    // sum, nine registers of sums. Eigen's Vector3d arithmetic (a pair and a single per
+    // vector) holds twelve, which with the operands outgrows SSE2's sixteen registers:
+    // the compiler kept four sums in memory, and each entry waited on a store and a load
+    // (docs/verification/performance.md measures the gain). Each lane makes the scalar
+    // form's operations on its component, so the bits are those of the one-field form below.
+    const Pairs L0{aL(0), aL(1)}, L1{aL(2), bL(0)}, L2{bL(1), bL(2)};
+    Pairs s00{}, s01{}, s02{}, s10{}, s11{}, s12{}, s20{}, s21{}, s22{};  // pair p times component j
+    for (Index m = 0; m < n; ++m) {
+      const Index I = col[m];
+      // By reference where value() returns one, and loaded straight into the registers:
+      // through a copy on the stack, a 16-byte load of two 8-byte stores waits for both.
+      const auto& ak = value_a(I);
+      const auto& bk = value_b(I);
+      const Pairs p0 = Pairs(_mm_loadu_pd(ak.data())) - L0;
+      const Pairs p1 = Pairs(_mm_unpacklo_pd(_mm_load_sd(ak.data() + 2), _mm_load_sd(bk.data()))) - L1;
+      const Pairs p2 = Pairs(_mm_loadu_pd(bk.data() + 1)) - L2;
+      const double ex = bx[m], ey = by[m], ez = bz[m];
+      const Pairs e0{ex, ex}, e1{ey, ey}, e2{ez, ez};
+      s00 += p0 * e0;
+      s01 += p0 * e1;
+      s02 += p0 * e2;
+      s10 += p1 * e0;
+      s11 += p1 * e1;
+      s12 += p1 * e2;
+      s20 += p2 * e0;
+      s21 += p2 * e1;
+      s22 += p2 * e2;
+    }
+    ga << s00[0], s01[0], s02[0], s00[1], s01[1], s02[1], s10[0], s11[0], s12[0];
+    *gb << s10[1], s11[1], s12[1], s20[0], s21[0], s22[0], s20[1], s21[1], s22[1];
   } else {
-    Vec3 a0 = Vec3::Zero(), a1 = a0, a2 = a0, b0 = a0, b1 = a0, b2 = a0;
+    Vec3 a0 = Vec3::Zero(), a1 = a0, a2 = a0;
     for (Index m = 0; m < n; ++m) {
       const Index I = col[m];
       const double ex = bx[m], ey = by[m], ez = bz[m];
@@ -141,15 +176,8 @@ void row_gradients(const Index* col, const float* b, Index n, const ValueA& valu
       a0 += va * ex;
       a1 += va * ey;
       a2 += va * ez;
-      if constexpr (two) {
-        const Vec3 vb = value_b(I) - bL;
-        b0 += vb * ex;
-        b1 += vb * ey;
-        b2 += vb * ez;
-      }
     }
     ga << a0, a1, a2;
-    if constexpr (two) *gb << b0, b1, b2;
   }
 }
 
@@ -241,7 +269,7 @@ Mat3 row_gradient_of(const GradientOperator& op, const std::vector<Stored>& grad
 template <class Stored>
 Mat3 row_gradient(const GradientOperator& op, const std::vector<Stored>& grad, const std::vector<Vec3>& v, Index L) {
   const Vec3* vp = v.data();
-  return row_gradient_of(op, grad, [vp](Index I) { return vp[I]; }, L);
+  return row_gradient_of(op, grad, [vp](Index I) -> const Vec3& { return vp[I]; }, L);
 }
 
 // Row L's contributions w M b_I(X_L), handed to add(I, c) in the row's order: its
@@ -303,8 +331,8 @@ void deformation_and_field_gradients(const GradientOperator& op, const std::vect
     const Index k0 = op.row_offset[L], k1 = op.row_offset[L + 1];
     Mat3 grad_u;
     lanes::row_gradients(
-        op.col.data() + k0, op.planar_row(L), k1 - k0, [dp](Index I) { return dp[I]; }, dp[L], grad_u,
-        [hp](Index I) { return hp[I]; }, hp[L], &grad_h);
+        op.col.data() + k0, op.planar_row(L), k1 - k0, [dp](Index I) -> const Vec3& { return dp[I]; }, dp[L],
+        grad_u, [hp](Index I) -> const Vec3& { return hp[I]; }, hp[L], &grad_h);
     F = Mat3::Identity() + grad_u;
   } else {
     F = deformation_gradient(op, grad, X, d, L);
@@ -316,9 +344,13 @@ void deformation_and_field_gradients(const GradientOperator& op, const std::vect
 // NodalInterpolation: how far d_L is from the field it interpolates, zero for a rigid
 // translation whatever the storage's rounding.
 inline Vec3 interpolation_residual(const NodalInterpolation& N, const std::vector<Vec3>& d, Index L) {
-  const Vec3 dL = d[L];
+  const Index* col = N.col.data();
+  const auto* psi = N.psi.data();
+  const Vec3* dp = d.data();
+  const Index k0 = N.row_offset[L], k1 = N.row_offset[L + 1];
+  const Vec3 dL = dp[L];
   Vec3 r = Vec3::Zero();
-  for (Index k = N.row_offset[L]; k < N.row_offset[L + 1]; ++k) r += static_cast<double>(N.psi[k]) * (dL - d[N.col[k]]);
+  for (Index k = k0; k < k1; ++k) r += static_cast<double>(psi[k]) * (dL - dp[col[k]]);
   return r;
 }
 
@@ -327,11 +359,13 @@ inline Vec3 interpolation_residual(const NodalInterpolation& N, const std::vecto
 // -psi_k wr at each entry's particle. The forces of a row sum to zero.
 template <class Sink>
 void scatter_residual(const NodalInterpolation& N, Index L, const Vec3& wr, const Sink& sink) {
+  const Index* col = N.col.data();
+  const auto* psi = N.psi.data();
   const Index k0 = N.row_offset[L], k1 = N.row_offset[L + 1];
   double sum = 0.0;
-  for (Index k = k0; k < k1; ++k) sum += static_cast<double>(N.psi[k]);
+  for (Index k = k0; k < k1; ++k) sum += static_cast<double>(psi[k]);
   sink(L, Vec3(sum * wr));
-  for (Index k = k0; k < k1; ++k) sink(N.col[k], Vec3(-(static_cast<double>(N.psi[k]) * wr)));
+  for (Index k = k0; k < k1; ++k) sink(col[k], Vec3(-(static_cast<double>(psi[k]) * wr)));
 }
 
 }  // namespace rkpm::rk
