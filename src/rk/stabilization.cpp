@@ -30,10 +30,10 @@ double add_stabilization_forces(const NodalInterpolation& N, Stabilization& s, c
     s.scatter.clear(t);
     Vec3* sum = s.scatter.buffer(t, 0);
     for (Index L = s.scatter.row_begin(t); L < s.scatter.row_end(t); ++L) {
-      const Vec3 r = interpolation_residual(N, d, L);
+      const auto [r, weight_sum] = interpolation_residual(N, d, L);
       energy[static_cast<std::size_t>(t)] += 0.5 * s.weight[L] * r.squaredNorm();
       const Vec3 wr = s.weight[L] * r;
-      scatter_residual(N, L, wr, RowScatter::AddTo{sum});
+      scatter_residual(N, L, wr, weight_sum, RowScatter::AddTo{sum});
     }
 #pragma omp barrier
     s.scatter.reduce_add(t, 0, -1.0, f);

@@ -118,16 +118,18 @@ void force_pass(Body& body, const std::vector<Stored>& grad, const Material& mat
       const double w = op.weight[L];
       if (divergence) (*field.flux)[L] = flux;
       Vec3 wr = Vec3::Zero();
+      double weight_sum = 0.0;
       if (stabilized) {
-        const Vec3 r = rk::interpolation_residual(N, body.d, L);
-        stabilization_energy += 0.5 * stab.weight[L] * r.squaredNorm();
-        wr = stab.weight[L] * r;
+        const auto residual = rk::interpolation_residual(N, body.d, L);
+        stabilization_energy += 0.5 * stab.weight[L] * residual.r.squaredNorm();
+        wr = stab.weight[L] * residual.r;
+        weight_sum = residual.weight_sum;
       }
       // The row's contributions, in the order the scatter's plan lists them.
       const auto contribute = [&](const auto& add_force, const auto& add_divergence) {
         rk::scatter_row(op, grad, L, w, P, add_force);
         if (divergence) rk::scatter_row(op, grad, L, w, flux, add_divergence);
-        if (stabilized) rk::scatter_residual(N, L, wr, add_force);
+        if (stabilized) rk::scatter_residual(N, L, wr, weight_sum, add_force);
       };
       if (scatter.seam_row(L))
         contribute(scatter.sink(t, 0, L), scatter.sink(t, channels - 1, L));
