@@ -118,6 +118,38 @@ TEST(Preflight, MemoryLimitNamesEstimateAndLimit) {
   EXPECT_NO_THROW(check_memory(estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits));
 }
 
+// A refined shell with ball supports: refused, and when ellipsoids would fit the refusal
+// names the key and what the run would need with them; when they would not, it does not.
+TEST(Preflight, RefusalNamesEllipsoidSupportsWhenTheyWouldFit) {
+  // The RBC shell refined in-plane at its five layers (only estimated, never built).
+  const std::string refined =
+      "generator = \"shell\"\nsemi_axes = [5e-6, 5e-6, 1.5e-6]\nthickness = 0.5e-6\nface_cells = 96\nlayers = 5";
+  const auto scene = scene::parse_scene(scene_with_cloud(refined), "shell.toml");
+  const RunEstimate e = estimate_run(scene);
+  const double with_ellipsoids = e.memory_bytes - (e.bodies[0].memory_bytes - e.bodies[0].memory_bytes_with_ellipsoids);
+  ASSERT_LT(with_ellipsoids, 0.8 * e.memory_bytes);  // spheres on this shell cost more
+  RunLimits limits;
+  limits.memory_bytes = 0.5 * (with_ellipsoids + e.memory_bytes);
+  try {
+    check_memory(e, limits);
+    ADD_FAILURE() << "expected a refusal";
+  } catch (const PreflightError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("[body.rk] support_shape = \"ellipsoid\" (about "), std::string::npos) << message;
+  }
+  limits.memory_bytes = 0.5 * with_ellipsoids;  // neither fits
+  try {
+    check_memory(e, limits);
+    ADD_FAILURE() << "expected a refusal";
+  } catch (const PreflightError& error) {
+    EXPECT_EQ(std::string(error.what()).find("support_shape"), std::string::npos) << error.what();
+  }
+  // Declared ellipsoids: the estimate is the one offered above.
+  const auto declared = scene::parse_scene(scene_with_cloud(refined, "[body.rk]\nsupport_shape = \"ellipsoid\"\n"),
+                                           "shell.toml");
+  EXPECT_DOUBLE_EQ(estimate_run(declared).memory_bytes, with_ellipsoids);
+}
+
 // A distributed run: a rank builds its share of the operator rows and keeps the whole
 // state, and the ranks of one node share its memory.
 TEST(Preflight, RanksDivideTheOperatorsAndShareTheNodesMemory) {

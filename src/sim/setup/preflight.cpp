@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <ostream>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 
@@ -70,20 +71,30 @@ BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
   // A ball reaches support x the longest edge along every axis; an ellipsoid support x the
   // spacing along each (scaled as the longest edge is to the longest mean spacing: the
   // stretched cells near a cubed sphere's corners).
-  const bool ellipsoid = spec.rk.choice("support_shape") == "ellipsoid";
-  const Vec3 reach_unit = ellipsoid ? Vec3(grid.spacing * std::max(1.0, grid.longest_edge / grid.spacing.maxCoeff()))
-                                    : Vec3::Constant(grid.longest_edge);
-  const Vec3 support = spec.rk.real("support") * reach_unit;
-  e.interpolation_entries = e.particles * support_count(support, grid.spacing, grid.extent);
-  // A smoothing cell's facets reach half a spacing beyond its particle.
-  const bool scni = spec.rk.choice("integration") == "scni";
-  const Vec3 cell_reach = scni ? Vec3(0.5 * reach_unit) : Vec3::Zero();
-  e.gradient_entries = e.particles * support_count(support + cell_reach, grid.spacing, grid.extent);
+  const auto entries = [&](bool ellipsoid) {
+    const Vec3 reach_unit = ellipsoid
+                                ? Vec3(grid.spacing * std::max(1.0, grid.longest_edge / grid.spacing.maxCoeff()))
+                                : Vec3::Constant(grid.longest_edge);
+    const Vec3 support = spec.rk.real("support") * reach_unit;
+    // A smoothing cell's facets reach half a spacing beyond its particle.
+    const bool scni = spec.rk.choice("integration") == "scni";
+    const Vec3 cell_reach = scni ? Vec3(0.5 * reach_unit) : Vec3::Zero();
+    return std::pair{e.particles * support_count(support + cell_reach, grid.spacing, grid.extent),
+                     e.particles * support_count(support, grid.spacing, grid.extent)};
+  };
   const double gradient_entry_bytes =
       4.0 + (spec.rk.choice("gradient_precision") == "float" ? 12.0 : 24.0) + kGradientEntryMargin;
   // Distributed: a rank's rows are its share of the operators; the state stays whole.
-  e.memory_bytes = e.particles * kStateBytes + (e.gradient_entries * gradient_entry_bytes +
-                                                e.interpolation_entries * kInterpolationEntryBytes) / ranks;
+  const auto memory = [&](const std::pair<double, double>& gradient_and_interpolation) {
+    return e.particles * kStateBytes + (gradient_and_interpolation.first * gradient_entry_bytes +
+                                        gradient_and_interpolation.second * kInterpolationEntryBytes) / ranks;
+  };
+  const bool ellipsoid = spec.rk.choice("support_shape") == "ellipsoid";
+  const auto declared = entries(ellipsoid);
+  e.gradient_entries = declared.first;
+  e.interpolation_entries = declared.second;
+  e.memory_bytes = memory(declared);
+  e.memory_bytes_with_ellipsoids = ellipsoid ? e.memory_bytes : memory(entries(true));
   return e;
 }
 
@@ -213,12 +224,24 @@ void check_memory(const RunEstimate& estimate, const RunLimits& limits) {
   }
   const auto largest = std::max_element(estimate.bodies.begin(), estimate.bodies.end(),
                                         [](const auto& a, const auto& b) { return a.memory_bytes < b.memory_bytes; });
+  // Ball supports on a cloud whose spacing differs between directions (a refined shell
+  // keeps its layers) hold many times the particles an ellipsoid does: when ellipsoids
+  // would fit, say so, with the key, rather than only asking for a coarser cloud.
+  double saved = 0.0;
+  for (const auto& b : estimate.bodies) saved += b.memory_bytes - b.memory_bytes_with_ellipsoids;
+  const double with_ellipsoids = needed * (estimate.memory_bytes - saved) / estimate.memory_bytes;
+  const std::string ellipsoids =
+      saved > 0.0 && with_ellipsoids <= available
+          ? fmt::format(" or [body.rk] support_shape = \"ellipsoid\" (about {} with it: supports shaped by the "
+                        "cloud's own spacing)",
+                        human_bytes(with_ellipsoids))
+          : "";
   throw PreflightError(fmt::format(
       "{}: the run needs about {} of memory{} ({:.4g} particles; body '{}' alone {}), more than the {} {}; "
-      "expected a coarser cloud{}{}",
+      "expected a coarser cloud{}{}{}",
       largest->size_key, human_bytes(needed), on_node, estimate.particles, largest->name,
       human_bytes(largest->memory_bytes), human_bytes(available),
-      limits.memory_bytes ? "given by --memory-limit" : "available to this process",
+      limits.memory_bytes ? "given by --memory-limit" : "available to this process", ellipsoids,
       limits.memory_bytes ? " or a larger --memory-limit" : "", on_node.empty() ? "" : " or fewer ranks per node"));
 }
 
