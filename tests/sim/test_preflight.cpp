@@ -118,6 +118,17 @@ TEST(Preflight, MemoryLimitNamesEstimateAndLimit) {
   EXPECT_NO_THROW(check_memory(estimate_run(scene::parse_scene(scene_with_cloud(kBlock), "t.toml")), limits));
 }
 
+// check_memory's refusal message, or "" (with a test failure) when it does not refuse.
+std::string refusal(const RunEstimate& estimate, const RunLimits& limits) {
+  try {
+    check_memory(estimate, limits);
+  } catch (const PreflightError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "expected a refusal";
+  return "";
+}
+
 // A refined shell with ball supports: refused, and when ellipsoids would fit the refusal
 // names the key and what the run would need with them; when they would not, it does not.
 TEST(Preflight, RefusalNamesEllipsoidSupportsWhenTheyWouldFit) {
@@ -130,20 +141,12 @@ TEST(Preflight, RefusalNamesEllipsoidSupportsWhenTheyWouldFit) {
   ASSERT_LT(with_ellipsoids, 0.8 * e.memory_bytes);  // spheres on this shell cost more
   RunLimits limits;
   limits.memory_bytes = 0.5 * (with_ellipsoids + e.memory_bytes);
-  try {
-    check_memory(e, limits);
-    ADD_FAILURE() << "expected a refusal";
-  } catch (const PreflightError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("[body.rk] support_shape = \"ellipsoid\" (about "), std::string::npos) << message;
-  }
+  const std::string fits = refusal(e, limits);
+  EXPECT_NE(fits.find("[body.rk] support_shape = \"ellipsoid\" (about "), std::string::npos) << fits;
   limits.memory_bytes = 0.5 * with_ellipsoids;  // neither fits
-  try {
-    check_memory(e, limits);
-    ADD_FAILURE() << "expected a refusal";
-  } catch (const PreflightError& error) {
-    EXPECT_EQ(std::string(error.what()).find("support_shape"), std::string::npos) << error.what();
-  }
+  const std::string neither = refusal(e, limits);
+  EXPECT_FALSE(neither.empty());
+  EXPECT_EQ(neither.find("support_shape"), std::string::npos) << neither;
   // Declared ellipsoids: the estimate is the one offered above.
   const auto declared = scene::parse_scene(scene_with_cloud(refined, "[body.rk]\nsupport_shape = \"ellipsoid\"\n"),
                                            "shell.toml");
@@ -168,14 +171,9 @@ TEST(Preflight, RanksDivideTheOperatorsAndShareTheNodesMemory) {
   RunLimits limits;
   limits.memory_bytes = 2.0 * four;  // room for two of the four ranks
   EXPECT_NO_THROW(check_memory(estimate_run(scene, 4, 1), limits));
-  try {
-    check_memory(node, limits);
-    ADD_FAILURE() << "four ranks on the node do not fit";
-  } catch (const PreflightError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("for the 4 ranks on this node"), std::string::npos) << what;
-    EXPECT_NE(what.find("or fewer ranks per node"), std::string::npos) << what;
-  }
+  const std::string what = refusal(node, limits);  // four ranks on the node do not fit
+  EXPECT_NE(what.find("for the 4 ranks on this node"), std::string::npos) << what;
+  EXPECT_NE(what.find("or fewer ranks per node"), std::string::npos) << what;
 }
 
 TEST(Preflight, OutputLargerThanTheFreeSpaceIsRefusedByEvery) {

@@ -11,9 +11,9 @@
 #include <fstream>
 #include <limits>
 #include <ostream>
-#include <utility>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace rkpm::sim {
 
