@@ -38,7 +38,7 @@ void time_stages(const scene::Scene& scene, SizeResult& r) {
     particles::Cloud cloud;
     r.cloud_s += seconds_of([&] { cloud = sim::build_cloud(spec); });
     std::unique_ptr<rk::RKApproximation> approx;
-    r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, sim::rk_settings(spec.rk)); });
+    r.tree_s += seconds_of([&] { approx = std::make_unique<rk::RKApproximation>(cloud, sim::rk_settings(spec)); });
     const auto scheme = sim::integration_scheme(spec.rk);
     r.gradient_s += seconds_of([&] {
       (void)rk::build_gradient_operator(cloud, *approx, scheme, sim::gradient_precision(spec.rk), {},

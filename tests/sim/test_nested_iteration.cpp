@@ -138,6 +138,29 @@ lambda = 4000
   EXPECT_EQ(scene::at_resolution(s, 0.01).bodies[1].cloud.integer("cells"), 2);
 }
 
+// The levels a relaxation runs: the scene's own factors while their coarsest level is
+// small, halves of it before them when a refined scene would start on a large cloud.
+TEST(NestedIteration, ARefinedSceneStartsOnACoarsestLevelOfAtMostTheCap) {
+  const std::string rbc = testing::read_text(std::filesystem::path(RKPM_SOURCE_DIR) / "examples/rbc/rbc.toml");
+  const auto at_face_cells = [&](int n) {
+    std::string text = rbc;
+    const std::string key = "face_cells = 32";
+    text.replace(text.find(key), key.size(), "face_cells = " + std::to_string(n));
+    return scene::parse_scene(text, "rbc.toml");
+  };
+  // The shipped cloud and the RBC study's finest (64:5): the scene's own levels, whose
+  // coarsest holds 4,330 and 17,290 particles.
+  EXPECT_EQ(nested_level_factors(at_face_cells(32)), (std::vector<double>{0.375, 0.625}));
+  EXPECT_EQ(nested_level_factors(at_face_cells(64)), (std::vector<double>{0.375, 0.625}));
+  // About 1e6 particles: 0.375 alone would start on 138,730; halved twice, on 8,680.
+  const scene::Scene fine = at_face_cells(182);
+  EXPECT_EQ(nested_level_factors(fine), (std::vector<double>{0.09375, 0.1875, 0.375, 0.625}));
+  EXPECT_EQ(scene::at_resolution(fine, 0.09375).bodies[0].cloud.integer("face_cells"), 17);
+  EXPECT_EQ(scene::at_resolution(fine, 0.1875).bodies[0].cloud.integer("face_cells"), 34);  // 34,690 > the cap
+  // No levels declared: none added.
+  EXPECT_TRUE(nested_level_factors(scene::parse_scene(block_scene("[]", false), "block.toml")).empty());
+}
+
 // The linear RK basis reproduces a linear field exactly, so a linear displacement of
 // the coarse cloud arrives on the fine cloud exactly, whatever the two clouds are.
 TEST(NestedIteration, CarryingTheStateReproducesALinearDisplacementField) {

@@ -40,8 +40,8 @@ struct Built {
   double particles, gradient_entries, interpolation_entries;
 };
 
-Built built(const std::string& cloud) {
-  const auto w = testing::build_from_text(scene_with_cloud(cloud));
+Built built(const std::string& cloud, const std::string& extra = "") {
+  const auto w = testing::build_from_text(scene_with_cloud(cloud, extra));
   const Body& b = *w.world->bodies[0];
   return {static_cast<double>(b.size()), static_cast<double>(b.gradient.col.size()),
           static_cast<double>(b.interpolation.col.size())};
@@ -129,13 +129,17 @@ std::string refusal(const RunEstimate& estimate, const RunLimits& limits) {
   return "";
 }
 
-// A refined shell with ball supports: refused, and when ellipsoids would fit the refusal
-// names the key and what the run would need with them; when they would not, it does not.
+// The RBC shell refined in-plane at its five layers (only estimated, never built).
+const std::string kRefinedShell =
+    "generator = \"shell\"\nsemi_axes = [5e-6, 5e-6, 1.5e-6]\nthickness = 0.5e-6\nface_cells = 96\nlayers = 5";
+
+// A refined shell with declared ball supports: refused, and when ellipsoids would fit the
+// refusal names the key and what the run would need with them; when they would not, it
+// does not.
 TEST(Preflight, RefusalNamesEllipsoidSupportsWhenTheyWouldFit) {
-  // The RBC shell refined in-plane at its five layers (only estimated, never built).
-  const std::string refined =
-      "generator = \"shell\"\nsemi_axes = [5e-6, 5e-6, 1.5e-6]\nthickness = 0.5e-6\nface_cells = 96\nlayers = 5";
-  const auto scene = scene::parse_scene(scene_with_cloud(refined), "shell.toml");
+  const std::string refined = kRefinedShell;
+  const auto scene =
+      scene::parse_scene(scene_with_cloud(refined, "[body.rk]\nsupport_shape = \"sphere\"\n"), "shell.toml");
   const RunEstimate e = estimate_run(scene);
   const double with_ellipsoids = e.memory_bytes - (e.bodies[0].memory_bytes - e.bodies[0].memory_bytes_with_ellipsoids);
   ASSERT_LT(with_ellipsoids, 0.8 * e.memory_bytes);  // spheres on this shell cost more
@@ -151,6 +155,44 @@ TEST(Preflight, RefusalNamesEllipsoidSupportsWhenTheyWouldFit) {
   const auto declared = scene::parse_scene(scene_with_cloud(refined, "[body.rk]\nsupport_shape = \"ellipsoid\"\n"),
                                            "shell.toml");
   EXPECT_DOUBLE_EQ(estimate_run(declared).memory_bytes, with_ellipsoids);
+}
+
+// support_shape = "auto" (the default): ellipsoids where a ball would hold more than
+// kAutoEllipsoidRowRatio times their particles, balls elsewhere; the pre-flight and the
+// build decide alike, and the estimate is the declared shape's.
+TEST(Preflight, AutoSupportsAreEllipsoidsWhereBallsWouldOverreach) {
+  const auto shape_of = [](const std::string& cloud) {
+    const auto scene = scene::parse_scene(scene_with_cloud(cloud), "auto.toml");
+    const RunEstimate automatic = estimate_run(scene);
+    const std::string shape = automatic.bodies[0].support_shape;
+    // The build resolves it the same way.
+    const bool ellipsoid = rk_settings(scene.bodies[0]).shape == rk::SupportShape::Ellipsoid;
+    EXPECT_EQ(ellipsoid ? "ellipsoid" : "sphere", shape) << cloud;
+    // The estimate is that of the declared shape.
+    const auto declared = scene::parse_scene(
+        scene_with_cloud(cloud, "[body.rk]\nsupport_shape = \"" + shape + "\"\n"), "declared.toml");
+    EXPECT_DOUBLE_EQ(estimate_run(declared).memory_bytes, automatic.memory_bytes) << cloud;
+    return shape;
+  };
+  EXPECT_EQ(shape_of(kBlock), "sphere");
+  EXPECT_EQ(shape_of(kSphere), "sphere");
+  EXPECT_EQ(shape_of(kShell), "sphere");  // the RBC shell at face_cells = 12: cells as wide as the layers
+  EXPECT_EQ(shape_of(kRefinedShell), "ellipsoid");  // in-plane spacing a third of the layers'
+  // A block refined in its plane only: its spacing across is 10 times its spacing along.
+  EXPECT_EQ(shape_of("generator = \"block\"\nsize = [1, 1, 1]\ncells = [100, 100, 10]"), "ellipsoid");
+  EXPECT_EQ(shape_of("generator = \"block\"\nsize = [1, 1, 0.25]\ncells = [20, 20, 5]"), "sphere");
+}
+
+// On a built body: a thin block with "auto" has the ellipsoids' operators exactly, and
+// they are shorter than the balls'.
+TEST(Preflight, AutoSupportsBuildTheResolvedShape) {
+  const std::string thin = "generator = \"block\"\nsize = [1, 1, 0.5]\ncells = [20, 20, 2]";
+  const Built automatic = built(thin);
+  const Built ellipsoids = built(thin, "[body.rk]\nsupport_shape = \"ellipsoid\"\n");
+  const Built balls = built(thin, "[body.rk]\nsupport_shape = \"sphere\"\n");
+  EXPECT_EQ(automatic.gradient_entries, ellipsoids.gradient_entries);
+  EXPECT_EQ(automatic.interpolation_entries, ellipsoids.interpolation_entries);
+  EXPECT_LT(ellipsoids.gradient_entries, 0.5 * balls.gradient_entries);
 }
 
 // A distributed run: a rank builds its share of the operator rows and keeps the whole

@@ -43,8 +43,10 @@ particles::Cloud build_cloud(const scene::BodySpec& body);
 
 IntegratorSettings integrator_settings(const scene::Scene& scene);
 
-// The RK approximation and the nodal-integration scheme a body's [body.rk] table asks for.
-rk::RKSettings rk_settings(const scene::ParamSet& rk_table);
+// The RK approximation a body's [body.rk] table asks for (support_shape = "auto"
+// resolved from the cloud's size, as the pre-flight estimate resolves it), and the
+// nodal-integration scheme.
+rk::RKSettings rk_settings(const scene::BodySpec& body);
 rk::Integration integration_scheme(const scene::ParamSet& rk_table);
 rk::GradientPrecision gradient_precision(const scene::ParamSet& rk_table);
 rk::FacetRule cell_quadrature(const scene::ParamSet& rk_table);

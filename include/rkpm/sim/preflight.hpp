@@ -34,6 +34,7 @@ struct BodyEstimate {
   double gradient_entries = 0.0;  // smoothed-gradient operator entries (SCNI rows)
   double interpolation_entries = 0.0;
   double memory_bytes = 0.0;      // peak during set-up and run, on one rank
+  std::string support_shape;      // what [body.rk] support_shape resolves to: "sphere" or "ellipsoid"
   // The same with [body.rk] support_shape = "ellipsoid" (memory_bytes when declared):
   // a refusal names the key when the ellipsoids would fit.
   double memory_bytes_with_ellipsoids = 0.0;

@@ -20,11 +20,13 @@ ParamTable rk_section() {
           .help("Kernel function: cubic B-spline (C2) or quintic B-spline (C4)."),
       ParamSpec::real("support", "-").at_least(1.0).at_most(4.0).defaults(2.0)
           .help("Kernel support radius divided by the local particle spacing."),
-      ParamSpec::choice("support_shape", {"sphere", "ellipsoid"}).defaults(std::string("sphere"))
+      ParamSpec::choice("support_shape", {"auto", "sphere", "ellipsoid"}).defaults(std::string("auto"))
           .help("sphere: a ball of radius support x the particle's longest mesh edge. ellipsoid: "
                 "shaped by the particle's mesh edges (support x the spacing in each direction), so a "
                 "thin wall's supports reach as many spacings across it as along it and the operators "
-                "stay short when the wall is refined in its plane. On a regular lattice both are the same."),
+                "stay short when the wall is refined in its plane. On a regular lattice both are the same. "
+                "auto: ellipsoids on a generated cloud where a ball would hold more than 4 times the "
+                "particles (a shell refined in its plane; `rkpm check` prints the choice), balls otherwise."),
       ParamSpec::choice("particle_order", {"input", "morton"}).defaults(std::string("morton"))
           .help("morton: renumbered along a Morton space-filling curve, so that particles near in space are "
                 "near in memory and every operator row reads a compact range (faster steps), and a "

@@ -140,7 +140,9 @@ ParamTable integrator_section() {
           .help("relax mode: nested iteration. Resolution factors of coarser clouds, coarsest first "
                 "(0.5 = half the cells along each direction; a shell keeps its layers): the scene is "
                 "relaxed on each in turn, each level starting from the one before carried over by the RK "
-                "approximation, and the last starts the run on the scene's own cloud. Generated clouds only."),
+                "approximation, and the last starts the run on the scene's own cloud. Halves of the coarsest "
+                "factor are put first while its level would hold more than 25,000 particles (a refined "
+                "scene keeps a cheap start). Generated clouds only."),
   };
   t.finish = check_integrator;
   return t;

@@ -1,8 +1,8 @@
 #include "rkpm/sim/nested_iteration.hpp"
 
-#include "rkpm/sim/body_state.hpp"
-
+#include "clouds/catalog.hpp"
 #include "rkpm/scene/resolution.hpp"
+#include "rkpm/sim/body_state.hpp"
 #include "rkpm/sim/build.hpp"
 #include "rkpm/sim/integrator.hpp"
 
@@ -157,10 +157,28 @@ Transfer carry_state(const World& from, World& to) {
   return all;
 }
 
+std::vector<double> nested_level_factors(const scene::Scene& scene) {
+  std::vector<double> factors = scene.integrator.reals("nested_levels");
+  const auto particles_at = [&](double factor) {
+    double n = 0.0;
+    for (const auto& body : scene::at_resolution(scene, factor).bodies) n += clouds::estimate_cloud(body).particles;
+    return n;
+  };
+  if (factors.empty()) return factors;
+  // A generator's smallest cloud ends the halving (its cell counts stop shrinking).
+  for (double coarsest = particles_at(factors.front()); coarsest > kCoarsestLevelParticles;) {
+    const double coarser = particles_at(0.5 * factors.front());
+    if (!(coarser < coarsest)) break;
+    factors.insert(factors.begin(), 0.5 * factors.front());
+    coarsest = coarser;
+  }
+  return factors;
+}
+
 std::vector<LevelRun> relax_coarse_levels(const scene::Scene& scene, World& world, std::ostream& log,
                                           const LevelStepCallback& after_step) {
   using Clock = std::chrono::steady_clock;
-  const auto& factors = scene.integrator.reals("nested_levels");
+  const std::vector<double> factors = nested_level_factors(scene);
   std::vector<LevelRun> runs;
   std::unique_ptr<World> previous;
   for (std::size_t l = 0; l < factors.size(); ++l) {

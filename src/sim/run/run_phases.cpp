@@ -63,7 +63,7 @@ RunSetup set_up(const scene::Scene& scene, const RunOptions& options, std::ostre
 std::vector<LevelRun> relax_levels(const scene::Scene& scene, RunSetup& s, const RunOptions& options,
                                    std::ostream& log, const std::function<double()>& elapsed) {
   std::unique_ptr<io::Progress> level_progress;
-  const std::size_t level_count = scene.integrator.reals("nested_levels").size();
+  const std::size_t level_count = nested_level_factors(scene).size();
   LevelStepCallback show;
   if (!options.quiet)
     show = [&](std::size_t l, const World& level, const Integrator& level_integrator, bool done) {

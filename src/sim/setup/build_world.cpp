@@ -1,6 +1,7 @@
 #include "rkpm/sim/build.hpp"
 
 #include "clouds/catalog.hpp"
+#include "sim/setup/row_model.hpp"
 #include "materials/catalog.hpp"
 #include "rkpm/common/split_mix64.hpp"
 #include "rkpm/particles/generators.hpp"
@@ -91,7 +92,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
   const std::vector<ConstrainedComponent> constrained = constrained_components(spec, cloud);
 
   try {
-    body->rk_settings = rk_settings(spec.rk);
+    body->rk_settings = rk_settings(spec);
     body->cell_quadrature = cell_quadrature(spec.rk);
     const rk::RKApproximation rk = approximation(*body);
     const auto scheme = integration_scheme(spec.rk);
@@ -186,11 +187,12 @@ particles::Cloud build_cloud(const scene::BodySpec& spec) {
   return cloud;
 }
 
-rk::RKSettings rk_settings(const scene::ParamSet& p) {
+rk::RKSettings rk_settings(const scene::BodySpec& spec) {
+  const scene::ParamSet& p = spec.rk;
   rk::RKSettings s;
   s.kernel = p.choice("kernel") == "quintic" ? rk::KernelType::QuinticBSpline : rk::KernelType::CubicBSpline;
   s.support = p.real("support");
-  s.shape = p.choice("support_shape") == "ellipsoid" ? rk::SupportShape::Ellipsoid : rk::SupportShape::Sphere;
+  s.shape = resolved_support_shape(spec);
   s.basis = p.choice("basis") == "quadratic" ? rk::Basis::Quadratic : rk::Basis::Linear;
   return s;
 }

@@ -2,6 +2,7 @@
 
 #include "rkpm/common/types.hpp"
 #include "clouds/catalog.hpp"
+#include "sim/setup/row_model.hpp"
 
 #include <fmt/format.h>
 #include <sys/resource.h>
@@ -18,8 +19,6 @@
 namespace rkpm::sim {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Bytes per particle of the run's state beyond the operators: X, d, v, force (4 x 24),
 // F per point (72; the stress, positions and accelerations are not stored), mass,
@@ -50,16 +49,6 @@ constexpr double kCheckpointBytes = 4.0 * 24.0 + 8.0;
 // The address space a process maps before its arrays (libraries, thread stacks).
 constexpr double kAddressSpaceBaseline = 1.0e9;
 
-// Particles of a support ellipsoid with semi-axes r (a ball: all equal) around a point
-// of a cloud with spacings h, clipped along each axis to the body's extent L (a thin wall
-// holds only its layers): (4/3) pi r0 r1 r2 / (h0 h1 h2), times min(1, (L_i + h_i) / 2 r_i)
-// along each axis.
-double support_count(const Vec3& r, const Vec3& h, const Vec3& extent) {
-  double count = 4.0 / 3.0 * kPi * r[0] * r[1] * r[2] / (h[0] * h[1] * h[2]);
-  for (int i = 0; i < 3; ++i) count *= std::min(1.0, (extent[i] + h[i]) / (2.0 * r[i]));
-  return std::max(count, 1.0);
-}
-
 BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
   BodyEstimate e;
   e.name = spec.name();
@@ -68,19 +57,9 @@ BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
   e.particles = grid.particles;
   e.elements = grid.elements;
   e.size_key = grid.size_key;
-  // A ball reaches support x the longest edge along every axis; an ellipsoid support x the
-  // spacing along each (scaled as the longest edge is to the longest mean spacing: the
-  // stretched cells near a cubed sphere's corners).
-  const auto entries = [&](bool ellipsoid) {
-    const Vec3 reach_unit = ellipsoid
-                                ? Vec3(grid.spacing * std::max(1.0, grid.longest_edge / grid.spacing.maxCoeff()))
-                                : Vec3::Constant(grid.longest_edge);
-    const Vec3 support = spec.rk.real("support") * reach_unit;
-    // A smoothing cell's facets reach half a spacing beyond its particle.
-    const bool scni = spec.rk.choice("integration") == "scni";
-    const Vec3 cell_reach = scni ? Vec3(0.5 * reach_unit) : Vec3::Zero();
-    return std::pair{e.particles * support_count(support + cell_reach, grid.spacing, grid.extent),
-                     e.particles * support_count(support, grid.spacing, grid.extent)};
+  const auto entries = [&](rk::SupportShape shape) {
+    const RowModel rows = row_model(spec, grid, shape);
+    return std::pair{e.particles * rows.gradient, e.particles * rows.interpolation};
   };
   const double gradient_entry_bytes =
       4.0 + (spec.rk.choice("gradient_precision") == "float" ? 12.0 : 24.0) + kGradientEntryMargin;
@@ -89,12 +68,14 @@ BodyEstimate estimate_body(const scene::BodySpec& spec, int ranks) {
     return e.particles * kStateBytes + (gradient_and_interpolation.first * gradient_entry_bytes +
                                         gradient_and_interpolation.second * kInterpolationEntryBytes) / ranks;
   };
-  const bool ellipsoid = spec.rk.choice("support_shape") == "ellipsoid";
-  const auto declared = entries(ellipsoid);
+  const rk::SupportShape shape = resolved_support_shape(spec, grid);
+  e.support_shape = shape == rk::SupportShape::Ellipsoid ? "ellipsoid" : "sphere";
+  const auto declared = entries(shape);
   e.gradient_entries = declared.first;
   e.interpolation_entries = declared.second;
   e.memory_bytes = memory(declared);
-  e.memory_bytes_with_ellipsoids = ellipsoid ? e.memory_bytes : memory(entries(true));
+  e.memory_bytes_with_ellipsoids =
+      shape == rk::SupportShape::Ellipsoid ? e.memory_bytes : memory(entries(rk::SupportShape::Ellipsoid));
   return e;
 }
 
@@ -270,11 +251,11 @@ void check_disk(const scene::Scene& scene, const RunEstimate& estimate, double f
 void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstimate& estimate,
                     const RunLimits& limits, const std::filesystem::path& out_dir) {
   out << fmt::format("scene {} ({})\n", scene.scene.text("name"), scene.file);
-  out << fmt::format("{:<16} {:<10} {:>12} {:>16} {:>12}\n", "body", "cloud", "particles", "operator entries",
-                     "memory");
+  out << fmt::format("{:<16} {:<10} {:>12} {:>10} {:>16} {:>12}\n", "body", "cloud", "particles", "supports",
+                     "operator entries", "memory");
   for (const auto& b : estimate.bodies)
-    out << fmt::format("{:<16} {:<10} {:>12.0f} {:>16.3g} {:>12}\n", b.name, b.generator, b.particles,
-                       b.gradient_entries + b.interpolation_entries, human_bytes(b.memory_bytes));
+    out << fmt::format("{:<16} {:<10} {:>12.0f} {:>10} {:>16.3g} {:>12}\n", b.name, b.generator, b.particles,
+                       b.support_shape, b.gradient_entries + b.interpolation_entries, human_bytes(b.memory_bytes));
   out << fmt::format("run: {:.0f} particles, about {} of memory", estimate.particles,
                      human_bytes(estimate.node_memory_bytes()));
   if (estimate.ranks > 1)
