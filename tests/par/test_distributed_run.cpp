@@ -171,6 +171,20 @@ TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
   EXPECT_EQ(error, 0.0);
 }
 
+// A clamped face of 49 x 49 particles: its constraint system is solved in two parts
+// (sim/integration/constraint_solver.hpp), each on the rank that owns it, and the run
+// still follows the one-rank path to the bit.
+TEST(DistributedRun, AClampedFaceSolvedInPartsFollowsTheOneRankPath) {
+  const fs::path dir = shared_dir("sag_large_face");
+  std::string text = replaced(sag_scene(), "mode = \"relax\"", "mode = \"dynamic\"\nt_end = 1e-3\ndamping = 2e4");
+  text = replaced(text, "cells = [10, 10, 4]", "cells = [48, 48, 2]");
+  const double error = run_both_ways(text, dir, 30);
+  if (!world().root()) return;
+  std::cout << "dynamic sag with a 2,401-particle clamped face, 30 steps, " << world().size()
+            << " ranks against 1: " << error << " of the largest displacement\n";
+  EXPECT_EQ(error, 0.0);
+}
+
 // A material with per-point state of its own (the viscoelastic model's viscous strains)
 // follows the one-rank path to the bit: the state is updated at each rank's own points.
 TEST(DistributedRun, AViscoelasticBlockFollowsTheOneRankPath) {

@@ -2,9 +2,9 @@
 
 #include "rkpm/par/ghost_exchange.hpp"
 #include "rkpm/par/shared_particles.hpp"
+#include "sim/integration/constraint_solver.hpp"
 
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <cstdint>
@@ -24,10 +24,11 @@ struct EssentialBC::Group {
   std::vector<Index> cf_offset;        // Lambda_CF by rows of C (CSR)
   std::vector<Index> cf_col;
   std::vector<double> cf_val;
-  // Lambda_CC, factored once: its transpose solves through the same factors
-  // (SparseLU::transpose()). A second factorization of Lambda_CC^T held as much again,
-  // which showed in a large block's peak memory (docs/verification/performance.md).
-  Eigen::SparseLU<SparseMatrix> lu;
+  // Lambda_CC, factored once in parts that the ranks share (constraint_solver.hpp): its
+  // transpose solves through the same factors (SparseLU::transpose()). A second
+  // factorization of Lambda_CC^T held as much again, which showed in a large block's peak
+  // memory (docs/verification/performance.md).
+  ConstraintSolver solver;
   // The rows whose free part this rank forms: all of them on one rank, those of the
   // particles it owns when distributed (a run of C: ranks own increasing ranges).
   std::size_t row_begin = 0, row_end = 0;
@@ -63,7 +64,7 @@ struct EssentialBC::Group {
         for (int p = 0; p < kPatterns; ++p)
           rhs(static_cast<Eigen::Index>(r), p) += ((hash >> (59 - p)) & 1u ? 1.0 : -1.0) * cf_val[static_cast<std::size_t>(k)];
       }
-    return size() == 0 ? 0.0 : Eigen::MatrixXd(lu.solve(rhs)).cwiseAbs().maxCoeff();
+    return size() == 0 ? 0.0 : solver.solve(rhs).cwiseAbs().maxCoeff();
   }
 
   // y[r] = (Lambda_CF z)_r for this rank's rows, every component; on several ranks the
@@ -135,8 +136,7 @@ EssentialBC::EssentialBC(const rk::NodalInterpolation& interp, std::vector<Const
     const auto m = g->size();
     SparseMatrix Lcc(m, m);
     Lcc.setFromTriplets(cc.begin(), cc.end());
-    g->lu.compute(Lcc);
-    if (g->lu.info() != Eigen::Success)
+    if (!g->solver.factor(Lcc))
       throw std::runtime_error("essential boundary conditions: the shape-function matrix of the constrained "
                                "particles is singular (axis " + std::string(1, "xyz"[a]) + ")");
     g->own(0, static_cast<Index>(n));
@@ -171,6 +171,10 @@ void EssentialBC::distribute(const par::Comm& comm, const std::vector<Index>& of
       columns.insert(columns.end(), g->cf_col.begin() + g->cf_offset[r], g->cf_col.begin() + g->cf_offset[r + 1]);
     g->columns.build(comm, offset, std::move(columns));
     g->shared.build(comm, offset, g->particles);
+    g->solver.distribute(comm, [&](Eigen::Index position) {
+      const Index J = g->particles[static_cast<std::size_t>(position)];
+      return static_cast<int>(std::upper_bound(offset.begin(), offset.end(), J) - offset.begin()) - 1;
+    });
   }
 }
 
@@ -184,7 +188,7 @@ double EssentialBC::transform_forces(std::vector<Vec3>& f) const {
     for (Eigen::Index r = 0; r < m; ++r)
       for (Eigen::Index j = 0; j < axes; ++j)
         fc(r, j) = f[g->particles[static_cast<std::size_t>(r)]][g->axes[static_cast<std::size_t>(j)]];
-    const Eigen::MatrixXd reaction = g->lu.transpose().solve(fc);  // Lambda_CC^-T f_C
+    const Eigen::MatrixXd reaction = g->solver.solve_transposed(fc);  // Lambda_CC^-T f_C
     for (const auto& [r, k] : g->owned_entries)
       for (Eigen::Index j = 0; j < axes; ++j)
         f[g->cf_col[static_cast<std::size_t>(k)]][g->axes[static_cast<std::size_t>(j)]] -=
@@ -216,7 +220,7 @@ void EssentialBC::impose(std::vector<Vec3>& d, std::vector<Vec3>& v) const {
         rhs(r, j) = g->target(r, j) - free_d[static_cast<std::size_t>(r)][a];
         rhs(r, axes + j) = g->velocity(r, j) - free_v[static_cast<std::size_t>(r)][a];
       }
-    const Eigen::MatrixXd solution = g->lu.solve(rhs);
+    const Eigen::MatrixXd solution = g->solver.solve(rhs);
     for (Eigen::Index r = 0; r < m; ++r)
       for (Eigen::Index j = 0; j < axes; ++j) {
         const int a = g->axes[static_cast<std::size_t>(j)];
