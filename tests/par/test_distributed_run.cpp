@@ -172,7 +172,7 @@ TEST(DistributedRun, TwoHundredDynamicStepsFollowTheOneRankPath) {
 }
 
 // A clamped face of 49 x 49 particles: its constraint system is solved in two parts
-// (sim/integration/constraint_solver.hpp), each on the rank that owns it, and the run
+// (sim/integration/constraint_solver.hpp), one on each rank, and the run
 // still follows the one-rank path to the bit.
 TEST(DistributedRun, AClampedFaceSolvedInPartsFollowsTheOneRankPath) {
   const fs::path dir = shared_dir("sag_large_face");

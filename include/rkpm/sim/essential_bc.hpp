@@ -61,10 +61,10 @@ class EssentialBC {
 
   // Distributed runs: the constrained rows couple particles of several ranks. The
   // system Lambda_CC is cut into parts that do not depend on the rank count, coupled
-  // through a small separator (sim/integration/constraint_solver.hpp): each part is
-  // solved by the rank that owns its first particle, the separator's system by every
-  // rank, so a rank's share of the solve follows its share of the constrained surface
-  // and every rank count gives the one-process bits. The work per row is split too:
+  // through a small separator (sim/integration/constraint_solver.hpp): the ranks take
+  // equal runs of the parts, and every rank solves the separator's system, so a rank's
+  // share of the solve is its share of the parts, and every rank count gives the
+  // one-process bits. The work per row is split too:
   // each rank forms the free part Lambda_CF d of the rows of the constrained particles
   // it owns (pulling the columns it does not own from their owners), and the ranks
   // gather those sums (par/shared_particles.hpp), so the solve reads the same values

@@ -1,6 +1,7 @@
 #include "sim/integration/constraint_solver.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 
 namespace rkpm::sim {
@@ -95,6 +96,13 @@ bool ConstraintSolver::factor(const SparseMatrix& A) {
     }
   }
   return true;
+}
+
+void ConstraintSolver::distribute(const par::Comm& comm) {
+  comm_ = &comm;
+  const auto K = static_cast<std::int64_t>(parts_.size());
+  part_rank_.resize(parts_.size());
+  for (std::int64_t k = 0; k < K; ++k) part_rank_[static_cast<std::size_t>(k)] = static_cast<int>(k * comm.size() / K);
 }
 
 std::vector<double> ConstraintSolver::gather_parts(const std::vector<double>& mine) const {

@@ -16,8 +16,8 @@
 // and a solve is
 //     y_k = A_kk^-1 b_k,   r_S = b_S - sum_k A_Sk y_k,   x_S = Sigma^-1 r_S,
 //     x_k = A_kk^-1 (b_k - A_kS x_S),     Sigma = A_SS - sum_k A_Sk A_kk^-1 A_kS,
-// the transpose alike with every block transposed. Each part's two solves run on the
-// rank that owns the part's first particle; the sum over k runs in the order of k on
+// the transpose alike with every block transposed. Each part's two solves run on one
+// rank, the ranks taking equal runs of parts; the sum over k runs in the order of k on
 // every rank (the parts' terms are gathered), and Sigma's solve is repeated everywhere
 // (S is a few rows of particles along each cut). The factors are built alike on every
 // rank. With K = 1 (|C| < 2 kPartSize) this is the single LU.
@@ -46,14 +46,10 @@ class ConstraintSolver {
   // leaves the solver empty) when A, or a part's interior block, is singular.
   bool factor(const SparseMatrix& A);
 
-  // On several ranks: part k is solved by the rank that owns C's particle
-  // first_particle_of_part(k); `owner(i)` gives the rank of C's i-th particle.
-  template <class Owner>
-  void distribute(const par::Comm& comm, Owner owner) {
-    comm_ = &comm;
-    part_rank_.resize(parts_.size());
-    for (std::size_t k = 0; k < parts_.size(); ++k) part_rank_[k] = owner(parts_[k].begin);
-  }
+  // On P ranks: part k is solved by rank floor(k P / K), so the ranks share the parts
+  // evenly whoever owns their particles (every rank holds the whole right-hand side, and
+  // a part's arithmetic is the same on any rank), and each rank's parts are a run of them.
+  void distribute(const par::Comm& comm);
 
   Eigen::Index parts() const { return static_cast<Eigen::Index>(parts_.size()); }
   Eigen::Index separator_size() const { return static_cast<Eigen::Index>(separator_.size()); }

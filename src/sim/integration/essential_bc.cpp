@@ -171,10 +171,7 @@ void EssentialBC::distribute(const par::Comm& comm, const std::vector<Index>& of
       columns.insert(columns.end(), g->cf_col.begin() + g->cf_offset[r], g->cf_col.begin() + g->cf_offset[r + 1]);
     g->columns.build(comm, offset, std::move(columns));
     g->shared.build(comm, offset, g->particles);
-    g->solver.distribute(comm, [&](Eigen::Index position) {
-      const Index J = g->particles[static_cast<std::size_t>(position)];
-      return static_cast<int>(std::upper_bound(offset.begin(), offset.end(), J) - offset.begin()) - 1;
-    });
+    g->solver.distribute(comm);
   }
 }
 
