@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 
@@ -193,6 +194,31 @@ TEST(Preflight, AutoSupportsBuildTheResolvedShape) {
   EXPECT_EQ(automatic.gradient_entries, ellipsoids.gradient_entries);
   EXPECT_EQ(automatic.interpolation_entries, ellipsoids.interpolation_entries);
   EXPECT_LT(ellipsoids.gradient_entries, 0.5 * balls.gradient_entries);
+}
+
+// A relaxation with nested levels: the estimate lists the particles of each level it
+// runs first, and `rkpm check` prints them.
+TEST(Preflight, NestedLevelsAreListedWithTheirParticles) {
+  const std::string text = testing::read_text(std::filesystem::path(RKPM_SOURCE_DIR) / "examples/rbc/rbc.toml");
+  const auto levels_at = [&](const std::string& face_cells) {
+    std::string refined = text;
+    refined.replace(refined.find("face_cells = 32"), 15, "face_cells = " + face_cells);
+    const auto scene = scene::parse_scene(refined, "rbc.toml");
+    const RunEstimate e = estimate_run(scene);
+    std::ostringstream printed;
+    print_estimate(printed, scene, e, RunLimits{}, ".");
+    return std::pair{e.level_particles, printed.str()};
+  };
+  const auto [shipped, shipped_text] = levels_at("32");
+  EXPECT_EQ(shipped, (std::vector<double>{4330, 12010}));
+  EXPECT_NE(shipped_text.find("nested levels, relaxed first: 4330 12010 particles"), std::string::npos) << shipped_text;
+  // Refined: two coarser levels put first (nested_level_factors).
+  EXPECT_EQ(levels_at("182").first, (std::vector<double>{8680, 34690, 138730, 389890}));
+  // No levels: nothing listed.
+  const auto block = scene::parse_scene(scene_with_cloud(kBlock), "block.toml");
+  std::ostringstream printed;
+  print_estimate(printed, block, estimate_run(block), RunLimits{}, ".");
+  EXPECT_EQ(printed.str().find("nested levels"), std::string::npos);
 }
 
 // A distributed run: a rank builds its share of the operator rows and keeps the whole

@@ -1,7 +1,7 @@
 // A small set of particles whose values every rank keeps current: each update gathers
-// the owners' values to every rank. For couplings that are solved redundantly on every
-// rank rather than split (the essential boundary conditions' constrained particles and
-// the columns of their rows: a surface subset, solved by one small sparse LU).
+// the owners' values to every rank. For couplings whose solve needs the whole set on
+// every rank (the essential boundary conditions' constrained particles: a surface
+// subset, whose system the ranks solve in parts, sim/integration/constraint_solver.hpp).
 #pragma once
 
 #include "rkpm/common/types.hpp"

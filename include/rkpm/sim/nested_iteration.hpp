@@ -58,6 +58,9 @@ Transfer carry_state(const World& from, World& to);
 // nested_levels.
 constexpr double kCoarsestLevelParticles = 25000.0;
 std::vector<double> nested_level_factors(const scene::Scene& scene);
+// The particles of the scene's clouds at a resolution factor, from the generators' size
+// estimates (no cloud is made).
+double level_particles(const scene::Scene& scene, double factor);
 
 // Relaxes the scene on each level of nested_level_factors(scene), coarsest first, and
 // carries the last level's state into `world` (built from the scene itself). Returns

@@ -55,6 +55,9 @@ struct RunEstimate {
                                       // most one per step); empty when the scene does not bound them
   double checkpoint_bytes = 0.0;
   double output_bytes = 0.0;          // the bound on frames (or the first and last) + checkpoint
+  // A relaxation with nested levels: the particles of each level it runs first, coarsest
+  // first (nested_level_factors: the declared ones and any put before them).
+  std::vector<double> level_particles;
 };
 
 // Limits a run must fit in. Absent: taken from the machine (available memory, cgroup

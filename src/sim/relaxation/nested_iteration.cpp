@@ -157,13 +157,15 @@ Transfer carry_state(const World& from, World& to) {
   return all;
 }
 
+double level_particles(const scene::Scene& scene, double factor) {
+  double n = 0.0;
+  for (const auto& body : scene::at_resolution(scene, factor).bodies) n += clouds::estimate_cloud(body).particles;
+  return n;
+}
+
 std::vector<double> nested_level_factors(const scene::Scene& scene) {
   std::vector<double> factors = scene.integrator.reals("nested_levels");
-  const auto particles_at = [&](double factor) {
-    double n = 0.0;
-    for (const auto& body : scene::at_resolution(scene, factor).bodies) n += clouds::estimate_cloud(body).particles;
-    return n;
-  };
+  const auto particles_at = [&](double factor) { return level_particles(scene, factor); };
   if (factors.empty()) return factors;
   // A generator's smallest cloud ends the halving (its cell counts stop shrinking).
   for (double coarsest = particles_at(factors.front()); coarsest > kCoarsestLevelParticles;) {

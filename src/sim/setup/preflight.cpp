@@ -2,6 +2,7 @@
 
 #include "rkpm/common/types.hpp"
 #include "clouds/catalog.hpp"
+#include "rkpm/sim/nested_iteration.hpp"
 #include "sim/setup/row_model.hpp"
 
 #include <fmt/format.h>
@@ -135,6 +136,7 @@ RunEstimate estimate_run(const scene::Scene& scene, int ranks, int ranks_on_node
     r.frames = 2.0;  // relaxing without t_end or every: the start and the end
   }
   r.output_bytes = r.frame_bytes * (r.frames ? *r.frames : 2.0) + r.checkpoint_bytes;
+  for (const double factor : nested_level_factors(scene)) r.level_particles.push_back(level_particles(scene, factor));
   return r;
 }
 
@@ -256,6 +258,11 @@ void print_estimate(std::ostream& out, const scene::Scene& scene, const RunEstim
   for (const auto& b : estimate.bodies)
     out << fmt::format("{:<16} {:<10} {:>12.0f} {:>10} {:>16.3g} {:>12}\n", b.name, b.generator, b.particles,
                        b.support_shape, b.gradient_entries + b.interpolation_entries, human_bytes(b.memory_bytes));
+  if (!estimate.level_particles.empty()) {
+    out << "nested levels, relaxed first:";
+    for (const double n : estimate.level_particles) out << fmt::format(" {:.0f}", n);
+    out << " particles\n";
+  }
   out << fmt::format("run: {:.0f} particles, about {} of memory", estimate.particles,
                      human_bytes(estimate.node_memory_bytes()));
   if (estimate.ranks > 1)
