@@ -64,6 +64,11 @@ bool ConstraintSolver::factor(const SparseMatrix& A) {
       separator_.push_back(i);
     }
   const auto s = static_cast<Eigen::Index>(separator_.size());
+  const auto singular = [&] {
+    parts_.clear();
+    separator_.clear();
+    return false;
+  };
 
   // Sigma = A_SS - sum_k A_Sk A_kk^-1 A_kS, summed in the order of k (the same on every rank).
   Eigen::MatrixXd sigma = Eigen::MatrixXd(block(A, separator_index, separator_index, s, s));
@@ -76,11 +81,7 @@ bool ConstraintSolver::factor(const SparseMatrix& A) {
       }
     const auto n = static_cast<Eigen::Index>(p.interior.size());
     p.lu = factored(block(A, interior_index, interior_index, n, n));
-    if (!p.lu) {
-      parts_.clear();
-      separator_.clear();
-      return false;
-    }
+    if (!p.lu) return singular();
     p.to_separator = block(A, interior_index, separator_index, n, s);
     p.from_separator = block(A, separator_index, interior_index, s, n);
     if (s == 0) continue;
@@ -89,11 +90,7 @@ bool ConstraintSolver::factor(const SparseMatrix& A) {
   }
   if (s > 0) {
     schur_lu_ = factored(sigma.sparseView(0.0));
-    if (!schur_lu_) {
-      parts_.clear();
-      separator_.clear();
-      return false;
-    }
+    if (!schur_lu_) return singular();
   }
   return true;
 }

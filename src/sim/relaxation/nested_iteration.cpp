@@ -165,11 +165,10 @@ double level_particles(const scene::Scene& scene, double factor) {
 
 std::vector<double> nested_level_factors(const scene::Scene& scene) {
   std::vector<double> factors = scene.integrator.reals("nested_levels");
-  const auto particles_at = [&](double factor) { return level_particles(scene, factor); };
   if (factors.empty()) return factors;
   // A generator's smallest cloud ends the halving (its cell counts stop shrinking).
-  for (double coarsest = particles_at(factors.front()); coarsest > kCoarsestLevelParticles;) {
-    const double coarser = particles_at(0.5 * factors.front());
+  for (double coarsest = level_particles(scene, factors.front()); coarsest > kCoarsestLevelParticles;) {
+    const double coarser = level_particles(scene, 0.5 * factors.front());
     if (!(coarser < coarsest)) break;
     factors.insert(factors.begin(), 0.5 * factors.front());
     coarsest = coarser;
