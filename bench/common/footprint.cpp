@@ -94,4 +94,25 @@ double internal_force_pair_updates(const sim::Body& b) {
   return entries;
 }
 
+double internal_force_flops(const sim::Body& b) {
+  constexpr double kGatherPerEntry = 21, kScatterPerEntry = 21, kResidualPerEntry = 10, kStabilizationScatter = 6;
+  // Per row: I + Grad u (9); per scatter w M (9), (w M) sum_k b~_k (15), added at L (3);
+  // per stabilized row W_L r_L (3) and its share at L (6).
+  constexpr double kIdentity = 9, kScatterPerRow = 27, kStabilizationPerRow = 9;
+  const auto* lce = materials::lce::material_of(b);
+  const bool frank = lce && lce->director.frank;
+  const double fields = frank ? 2.0 : 1.0;  // F, and Grad h with the Frank term
+  const double entries = static_cast<double>(b.gradient.col.size());
+  const double rows = b.gradient.row_offset.empty() ? 0.0 : static_cast<double>(b.gradient.row_offset.size() - 1);
+  double flops = entries * fields * (kGatherPerEntry + kScatterPerEntry) + rows * (kIdentity + fields * kScatterPerRow);
+  if (b.stabilization.active())
+    flops += static_cast<double>(b.interpolation.col.size()) * (kResidualPerEntry + kStabilizationScatter) +
+             rows * kStabilizationPerRow;
+  return flops;
+}
+
+double internal_force_flops(const sim::World& world) {
+  return sum_over_bodies(world, [](const sim::Body& b) { return internal_force_flops(b); });
+}
+
 }  // namespace rkpm::bench

@@ -57,4 +57,18 @@ Traffic internal_force_traffic(const sim::World& world);
 // "pair updates" of the benchmarks' counters.
 double internal_force_pair_updates(const sim::Body& body);
 
+// Floating-point operations of one internal-force step, counted from the arithmetic of
+// the operator loops (rk/row_kernels.hpp), per entry:
+//   gather of F (and of Grad h)   3 subtractions, 9 multiplies, 9 adds     21 per field
+//   scatter of the force (and of  9 multiplies and 6 adds for (w M) b~_k,
+//   the Frank flux divergence)    3 adds into the sum, 3 for sum_k b~_k     21 per product
+//   stabilization residual        3 subtractions, 3 multiplies, 4 adds     10
+//   stabilization scatter         3 multiplies, 3 adds                       6
+// and per row the 9 adds of I + Grad u, per scatter the 9 multiplies of w M and the 18 of
+// the own-particle term, per stabilized row 9. The material's stress (a few hundred per row, with cube roots) is not counted,
+// nor the widening of the stored floats: a lower bound, so a roofline point lies at or
+// left of its true arithmetic intensity.
+double internal_force_flops(const sim::Body& body);
+double internal_force_flops(const sim::World& world);
+
 }  // namespace rkpm::bench

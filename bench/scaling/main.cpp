@@ -3,11 +3,13 @@
 // streaming bandwidth as the bound of the internal-force step. Run by
 // `scripts/study scaling`; docs/verification/performance.md explains every column.
 //
-// The study re-runs this program for each size (--child) and for the triad
-// (--triad-only); those modes print one machine-readable line on stdout.
+// The study re-runs this program for each size (--child) and for the machine's bounds,
+// the triad and the arithmetic peak (--triad-only); those modes print machine-readable
+// lines on stdout.
 #include "measure_size.hpp"
 #include "report.hpp"
 #include "study.hpp"
+#include "peak.hpp"
 #include "triad.hpp"
 
 #include <CLI/CLI.hpp>
@@ -86,7 +88,7 @@ int main(int argc, char** argv) {
   // Internal modes (the study runs them in child processes).
   app.add_option("--child", child_geometry, "internal: measure one size of this geometry and print a RESULT line");
   app.add_option("--resolution", child_resolution, "internal: the resolution of --child");
-  app.add_flag("--triad-only", triad_only, "internal: measure the triad and print a TRIAD line");
+  app.add_flag("--triad-only", triad_only, "internal: measure the triad and the arithmetic peak, print TRIAD and PEAK lines");
   CLI11_PARSE(app, argc, argv);
   study.measure.split = !no_split;
   study.memory_limit_bytes = memory_limit_gb * 1e9;
@@ -98,6 +100,9 @@ int main(int argc, char** argv) {
       const auto t = scaling::measure_triad(study.triad_array_bytes, 2, study.triad_repetitions);
       fmt::print("TRIAD gb_per_s={:.6g} array_bytes={} threads={} repetitions={}\n", t.gb_per_s, t.array_bytes,
                  t.threads, t.repetitions);
+      const auto p = scaling::measure_peak(2, study.triad_repetitions);
+      fmt::print("PEAK vector_gflops={:.6g} scalar_gflops={:.6g} vector_lanes={} isa={} threads={}\n",
+                 p.vector_gflops, p.scalar_gflops, p.vector_lanes, p.isa, p.threads);
       return 0;
     }
     study.geometries.clear();

@@ -112,6 +112,7 @@ SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureS
     r.state_bytes = static_cast<double>(fp.state);
     r.cloud_bytes = static_cast<double>(fp.cloud);
     r.traffic_bytes = static_cast<double>(bench::internal_force_traffic(*world).total());
+    r.force_flops = bench::internal_force_flops(*world);
     record_row_lengths(*world, r);
 
     const auto timed_steps = [&](int threads, int warmup, int count) {

@@ -34,6 +34,7 @@ const std::vector<std::pair<const char*, double SizeResult::*>>& numeric_fields(
       {"state_bytes", &SizeResult::state_bytes},
       {"cloud_bytes", &SizeResult::cloud_bytes},
       {"traffic_bytes", &SizeResult::traffic_bytes},
+      {"force_flops", &SizeResult::force_flops},
       {"gradient_row_mean", &SizeResult::gradient_row_mean},
       {"gradient_row_p95", &SizeResult::gradient_row_p95},
       {"gradient_row_max", &SizeResult::gradient_row_max},

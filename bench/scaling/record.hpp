@@ -30,6 +30,7 @@ struct SizeResult {
   double peak_bytes = 0, baseline_bytes = 0;
   double operators_bytes = 0, state_bytes = 0, cloud_bytes = 0;
   double traffic_bytes = 0;  // internal-force step, footprint.hpp
+  double force_flops = 0;    // its floating-point operations, footprint.hpp (a lower bound)
 
   // Row lengths (entries per row) of the gradient operator over all bodies: mean, 95th
   // percentile, largest; and the interpolation operator's mean.

@@ -91,11 +91,12 @@ const SizeResult* largest(const StudyResult& s, const std::string& geometry) {
 
 struct Fits {
   PowerFit step_2t, step_1t, force, setup;
+  PowerFit setup_large;  // over the sizes from Targets::setup_exponent_from up
   double n_min = NAN, n_max = NAN;
 };
 
 Fits fits_of(const StudyResult& s, const std::string& geometry) {
-  std::vector<double> n, step2, step1, force, setup;
+  std::vector<double> n, step2, step1, force, setup, n_large, setup_large;
   Fits f;
   for (const auto& r : s.sizes) {
     if (r.geometry != geometry || !ok(r)) continue;
@@ -104,7 +105,12 @@ Fits fits_of(const StudyResult& s, const std::string& geometry) {
     step1.push_back(r.step_1t_s);
     force.push_back(r.force_2t_s);
     setup.push_back(setup_total_s(r));
+    if (r.particles >= Targets{}.setup_exponent_from) {
+      n_large.push_back(r.particles);
+      setup_large.push_back(setup_total_s(r));
+    }
   }
+  f.setup_large = fit_power_law(n_large, setup_large);
   if (!n.empty()) {
     f.n_min = *std::min_element(n.begin(), n.end());
     f.n_max = *std::max_element(n.begin(), n.end());
@@ -169,18 +175,40 @@ void write_tables(std::ostream& md, const StudyResult& s) {
                       per_particle(r.cloud_bytes, r), r.gradient_row_mean, r.gradient_row_p95, r.gradient_row_max,
                       r.interpolation_row_mean, r.note);
   }
+  md << "\n#### Roofline of the internal force (2 threads)\n\n";
+  md << fmt::format("Ceilings: the triad's {:.2f} GB/s and the arithmetic peak without fused multiply-adds, "
+                    "{} threads: **{:.1f} GFLOP/s** on {} vectors ({} doubles), **{:.1f} GFLOP/s** scalar. "
+                    "Ridge point {:.2f} flop/B (vector peak / triad). Operations counted from the kernels' "
+                    "arithmetic, the stress left out (bench/common/footprint.hpp).\n\n",
+                    s.triad.gb_per_s, s.peak.threads, s.peak.vector_gflops, s.peak.isa, s.peak.vector_lanes,
+                    s.peak.scalar_gflops, s.peak.vector_gflops / s.triad.gb_per_s);
+  md << "| geometry | particles | flops per particle-step | bytes per particle-step | intensity [flop/B] | "
+        "achieved [GFLOP/s] | of the vector peak | of the scalar peak | roofline time [ms] | measured [ms] | "
+        "of the roofline |\n"
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  const auto percent = [](double f) { return std::isfinite(f) ? fmt::format("{:.0f} %", 100.0 * f) : "-"; };
+  for (const auto& r : s.sizes) {
+    if (!ok(r)) continue;
+    const double bound = roofline_s(r, s.triad, s.peak);
+    md << fmt::format("| {} | {} | {:.0f} | {:.0f} | {} | {} | {} | {} | {} | {} | {} |\n", r.geometry,
+                      count(r.particles), r.force_flops / r.particles, r.traffic_bytes / r.particles,
+                      num(intensity(r)), num(gflops(r)), percent(gflops(r) / s.peak.vector_gflops),
+                      percent(gflops(r) / s.peak.scalar_gflops), num(bound, 1e3), num(r.force_2t_s, 1e3),
+                      percent(bound / r.force_2t_s));
+  }
   md << "\n#### Fitted exponents p of t ~ N^p\n\n"
-        "| geometry | sizes | particles | step, 2 threads | step, 1 thread | internal force | set-up |\n"
-        "|---|---:|---|---:|---:|---:|---:|\n";
+        "| geometry | sizes | particles | step, 2 threads | step, 1 thread | internal force | set-up | set-up "
+        "from 1e5 |\n"
+        "|---|---:|---|---:|---:|---:|---:|---:|\n";
   for (const auto& g : geometries_of(s)) {
     const Fits f = fits_of(s, g);
     if (f.step_2t.points == 0) {
       md << fmt::format("| {} | 0 | no size measured |||||\n", g);
       continue;
     }
-    md << fmt::format("| {} | {} | {} - {} | {} | {} | {} | {} |\n", g, f.step_2t.points, count(f.n_min),
+    md << fmt::format("| {} | {} | {} - {} | {} | {} | {} | {} | {} |\n", g, f.step_2t.points, count(f.n_min),
                       count(f.n_max), num(f.step_2t.exponent), num(f.step_1t.exponent), num(f.force.exponent),
-                      num(f.setup.exponent));
+                      num(f.setup.exponent), num(f.setup_large.exponent));
   }
 }
 
@@ -225,6 +253,10 @@ void write_targets(std::ostream& md, const StudyResult& s, const RbcRelaxation& 
     const double setup = setup_total_s(*r) / (r->particles / 1e5);
     md << fmt::format("| {}: set-up <= {} s per 100k particles | {} s {} | {} |\n", g, num(t.setup_s_per_100k),
                       num(setup), at, verdict(true, setup <= t.setup_s_per_100k));
+    const bool large_range = f.setup_large.points >= 2 && f.n_max >= 0.9e6;
+    md << fmt::format("| {}: set-up exponent <= {} from 1e5 to 1e6 particles | {} over {} sizes | {} |\n", g,
+                      num(t.setup_exponent), num(f.setup_large.exponent), f.setup_large.points,
+                      verdict(large_range, f.setup_large.exponent <= t.setup_exponent));
   }
   if (rbc.wall_s >= 0)
     md << fmt::format("| default RBC relaxation (examples/rbc/rbc.toml, 2 threads) <= {:.0f} s wall | {} s, {} "
@@ -241,6 +273,17 @@ void write_targets(std::ostream& md, const StudyResult& s, const RbcRelaxation& 
 
 double setup_total_s(const SizeResult& r) { return r.setup_s + r.init_s; }
 
+double intensity(const SizeResult& r) {
+  return ok(r) && r.traffic_bytes > 0 && r.force_flops > 0 ? r.force_flops / r.traffic_bytes : NAN;
+}
+
+double gflops(const SizeResult& r) { return ok(r) && r.force_2t_s > 0 ? r.force_flops / r.force_2t_s / 1e9 : NAN; }
+
+double roofline_s(const SizeResult& r, const TriadResult& triad, const PeakResult& peak) {
+  if (!ok(r) || triad.gb_per_s <= 0 || peak.vector_gflops <= 0) return NAN;
+  return std::max(r.traffic_bytes / (triad.gb_per_s * 1e9), r.force_flops / (peak.vector_gflops * 1e9));
+}
+
 double bandwidth_fraction(const SizeResult& r, const TriadResult& triad) {
   if (!ok(r) || triad.gb_per_s <= 0 || r.force_2t_s <= 0) return NAN;
   return (r.traffic_bytes / (triad.gb_per_s * 1e9)) / r.force_2t_s;
@@ -251,7 +294,8 @@ void write_csv(const std::string& path, const StudyResult& s) {
   out << "geometry,status";
   for (const auto& [name, member] : numeric_fields()) out << ',' << name;
   out << ",other_setup_s,setup_total_s,peak_bytes_per_particle,array_bytes_per_particle,speedup_2t,"
-         "ns_per_particle_step_2t,bandwidth_fraction,triad_gb_per_s,note\n";
+         "ns_per_particle_step_2t,bandwidth_fraction,triad_gb_per_s,intensity_flop_per_byte,gflops_2t,roofline_s,"
+         "peak_vector_gflops,peak_scalar_gflops,vector_lanes,isa,note\n";
   for (const auto& r : s.sizes) {
     out << r.geometry << ',' << r.status;
     for (const auto& [name, member] : numeric_fields()) out << ',' << fmt::format("{:.6g}", r.*member);
@@ -261,7 +305,10 @@ void write_csv(const std::string& path, const StudyResult& s) {
         << value(per_particle(r.peak_bytes, r)) << ',' << value(per_particle(arrays_bytes(r), r)) << ','
         << value(r.step_1t_s / r.step_2t_s) << ',' << value(1e9 * r.step_2t_s / r.particles) << ','
         << value(bandwidth_fraction(r, s.triad)) << ',' << fmt::format("{:.6g}", s.triad.gb_per_s) << ','
-        << csv_text(r.note) << '\n';
+        << value(intensity(r)) << ',' << value(gflops(r)) << ',' << value(roofline_s(r, s.triad, s.peak)) << ','
+        << fmt::format("{:.6g},{:.6g},{},{}", s.peak.vector_gflops, s.peak.scalar_gflops, s.peak.vector_lanes,
+                       s.peak.isa)
+        << ',' << csv_text(r.note) << '\n';
   }
 }
 
@@ -275,6 +322,8 @@ void write_markdown(const std::string& path, const StudyResult& s, const RbcRela
                     command, today(), cpu_model(), std::thread::hardware_concurrency(), count(largest_n));
   md << fmt::format("Load average when the study ended: {} (other work on the machine inflates every time).\n\n",
                     load_average());
+  md << fmt::format("Built for {} ({} doubles per vector register){}.\n\n", s.peak.isa, s.peak.vector_lanes,
+                    s.peak.isa == "SSE2" ? ", the portable build" : ", a build for this machine (-DRKPM_NATIVE=ON)");
   md << fmt::format("Every geometry's scene declares `[body.rk] support_shape = \"{}\"`, `particle_order = \"{}\"`, "
                     "`gradient_precision = \"{}\"`.\n\n",
                     s.rk.support_shape, s.rk.particle_order, s.rk.gradient_precision);

@@ -24,10 +24,12 @@ struct MemoryTarget {
 };
 
 struct Targets {
-  double bandwidth_fraction = 0.4;  // internal-force step, of the triad bound
+  double bandwidth_fraction = 0.5;  // internal-force step, of the triad bound
   double step_exponent = 1.05;      // from 1e3 to 1e6 particles
   double setup_s_per_100k = 2.0;
-  double rbc_relaxation_s = 60.0;
+  double setup_exponent = 1.02;     // from 1e5 to 1e6 particles, where a growing search shows
+  double setup_exponent_from = 0.9e5;
+  double rbc_relaxation_s = 15.0;
   // Block 2 KB, sphere 3 KB, shell 4 KB, read as thousands of bytes (the stricter).
   static MemoryTarget memory(const std::string& geometry) {
     if (geometry == "shell") return {4000.0, 1e4};
@@ -42,6 +44,12 @@ void write_markdown(const std::string& path, const StudyResult& study, const Rbc
 
 // Derived quantities, shared by both outputs.
 double bandwidth_fraction(const SizeResult& r, const TriadResult& triad);  // NaN when not measurable
+// The roofline (docs/verification/performance.md): the internal force's arithmetic
+// intensity [flop/B], its rate [1e9 flop/s], and the least time the two ceilings allow
+// it, bytes / triad or flops / vector peak, whichever is longer [s]; NaN when not measurable.
+double intensity(const SizeResult& r);
+double gflops(const SizeResult& r);
+double roofline_s(const SizeResult& r, const TriadResult& triad, const PeakResult& peak);
 double setup_total_s(const SizeResult& r);                                   // build_world + initialize
 
 }  // namespace rkpm::scaling

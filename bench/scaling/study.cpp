@@ -27,24 +27,43 @@ std::vector<double> ladder(const StudySettings& s) {
   return targets;
 }
 
-TriadResult parse_triad(const std::string& output) {
-  TriadResult t;
+// The key=value words of the output's line that starts with `tag`, handed to set(key, value).
+template <class Set>
+void parse_line(const std::string& output, const std::string& tag, const Set& set) {
   std::istringstream lines(output);
   std::string line;
   while (std::getline(lines, line)) {
-    if (line.rfind("TRIAD ", 0) != 0) continue;
-    std::istringstream words(line.substr(6));
+    if (line.rfind(tag + " ", 0) != 0) continue;
+    std::istringstream words(line.substr(tag.size() + 1));
     std::string w;
     while (words >> w) {
       const auto eq = w.find('=');
-      const std::string key = w.substr(0, eq), value = w.substr(eq + 1);
-      if (key == "gb_per_s") t.gb_per_s = std::stod(value);
-      if (key == "array_bytes") t.array_bytes = static_cast<std::size_t>(std::stod(value));
-      if (key == "threads") t.threads = std::stoi(value);
-      if (key == "repetitions") t.repetitions = std::stoi(value);
+      if (eq != std::string::npos) set(w.substr(0, eq), w.substr(eq + 1));
     }
   }
+}
+
+TriadResult parse_triad(const std::string& output) {
+  TriadResult t;
+  parse_line(output, "TRIAD", [&](const std::string& key, const std::string& value) {
+    if (key == "gb_per_s") t.gb_per_s = std::stod(value);
+    if (key == "array_bytes") t.array_bytes = static_cast<std::size_t>(std::stod(value));
+    if (key == "threads") t.threads = std::stoi(value);
+    if (key == "repetitions") t.repetitions = std::stoi(value);
+  });
   return t;
+}
+
+PeakResult parse_peak(const std::string& output) {
+  PeakResult p;
+  parse_line(output, "PEAK", [&](const std::string& key, const std::string& value) {
+    if (key == "vector_gflops") p.vector_gflops = std::stod(value);
+    if (key == "scalar_gflops") p.scalar_gflops = std::stod(value);
+    if (key == "vector_lanes") p.vector_lanes = std::stoi(value);
+    if (key == "isa") p.isa = value;
+    if (key == "threads") p.threads = std::stoi(value);
+  });
+  return p;
 }
 
 }  // namespace
@@ -71,8 +90,11 @@ StudyResult run_study(const StudySettings& s) {
              s.triad_repetitions);
   const ChildOutcome triad = run_self(triad_arguments(s));
   study.triad = parse_triad(triad.output);
+  study.peak = parse_peak(triad.output);
   if (!triad.ok || study.triad.gb_per_s <= 0.0) fmt::print(stderr, "triad failed: {}\n", triad.status);
-  else fmt::print(stderr, "triad: {:.2f} GB/s\n", study.triad.gb_per_s);
+  else
+    fmt::print(stderr, "triad: {:.2f} GB/s; peak {:.1f} GFLOP/s ({}, {} lanes), scalar {:.1f}\n", study.triad.gb_per_s,
+               study.peak.vector_gflops, study.peak.isa, study.peak.vector_lanes, study.peak.scalar_gflops);
 
   for (const bench::Geometry g : s.geometries) {
     double bytes_per_particle = kDefaultBytesPerParticle;

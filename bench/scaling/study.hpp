@@ -4,6 +4,7 @@
 
 #include "../common/scenes.hpp"
 #include "measure_size.hpp"
+#include "peak.hpp"
 #include "record.hpp"
 #include "triad.hpp"
 
@@ -24,6 +25,7 @@ struct StudySettings {
 
 struct StudyResult {
   TriadResult triad;
+  PeakResult peak;                 // the roofline's other ceiling
   std::vector<SizeResult> sizes;  // geometry by geometry, small to large
   bench::RkChoices rk;             // the [body.rk] keys the scenes declared
 };

@@ -5,13 +5,20 @@
 # stage), the time per step with 1 and 2 threads, the internal force against the
 # STREAM-triad bandwidth bound, peak memory per particle and the fitted exponents;
 # then the default RBC relaxation's wall time. Each size runs in its own process.
+# Also the machine's arithmetic peak and the internal force's counted operations: the
+# roofline (perf-roofline.png) and, after a --native run, the two builds side by side.
 # Writes out/scaling/perf-scaling.{csv,md} and perf-{step,setup,memory}-vs-particles.png;
 # a full run (--max 1000000 with the RBC run, the default) also copies them to
 # docs/figures/ and the tables into docs/verification/performance.md.
-# Usage: scripts/study scaling [--coarse] [--max N] [--no-rbc-run] [rkpm_scaling options...]
-#   --max defaults to 1000000 (tens of minutes on 2 cores; 100000 takes a few).
+# Usage: scripts/study scaling [--native] [--coarse] [--max N] [--no-rbc-run] [rkpm_scaling options...]
+#   --max defaults to 1000000 (about 7 minutes on 2 cores; 100000 takes a few).
 #   --coarse: --max 100000 --no-rbc-run; docs untouched.
 #   --no-rbc-run skips the default RBC relaxation's timing.
+#   --native: the same study with a build for this machine's instruction set
+#     (-DRKPM_NATIVE=ON, in the build folder's name with -native appended), into
+#     out/scaling-native/; a full run copies its CSV to docs/figures/perf-scaling-native.csv
+#     and its tables stay in out/. Either full run redraws the roofline and the
+#     side-by-side table in docs/verification/performance.md from the two CSV files.
 set -euo pipefail
 script_name="study scaling"
 source "$(dirname "$0")/../lib/common.sh"
@@ -23,8 +30,10 @@ max=1000000
 rbc_run=1
 extra=()
 coarse=0
+native=0
 while [ $# -gt 0 ]; do
   case $1 in
+    --native) native=1; shift ;;
     --coarse) coarse=1; max=100000; rbc_run=0; shift ;;
     --max) max=$2; shift 2 ;;
     --max=*) max=${1#--max=}; shift ;;
@@ -39,19 +48,31 @@ update_doc=0
 [ "$coarse" = 0 ] && [ "$max" = 1000000 ] && [ "$rbc_run" = 1 ] && [ ${#extra[@]} -eq 0 ] && update_doc=1
 
 rkpm_need gnuplot python3
-rkpm_build rkpm_scaling rkpm
+rkpm_need_python_modules matplotlib
+if [ $native = 1 ]; then
+  build=$rkpm_build_dir-native
+  out=$rkpm_out_root/scaling-native
+  mkdir -p "$out"
+  out=$(cd "$out" && pwd)
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release -DRKPM_NATIVE=ON -DRKPM_BUILD_PYTHON=OFF >/dev/null
+  cmake --build "$build" -j"$(nproc)" --target rkpm_scaling rkpm
+else
+  rkpm_build rkpm_scaling rkpm
+fi
 program=$build/bench/rkpm_scaling
 [ -x "$program" ] || rkpm_die "$program was not built (is Google Benchmark installed?)"
 
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-command_text="scripts/study scaling --max $max${extra[*]:+ ${extra[*]}}"
+native_flag=""
+[ $native = 0 ] || native_flag=" --native"
+command_text="scripts/study scaling$native_flag --max $max${extra[*]:+ ${extra[*]}}"
 
 # The default RBC relaxation, as command (a) of the README runs it but with 2 threads.
 rbc_args=()
 if [ $rbc_run = 1 ]; then
   echo "RBC relaxation (examples/rbc/rbc.toml, 2 threads): running"
-  OMP_NUM_THREADS=2 "$rkpm_build_dir/src/app/rkpm" run "$here/examples/rbc/rbc.toml" --out "$scratch/rbc" --quiet ||
+  OMP_NUM_THREADS=2 "$build/src/app/rkpm" run "$here/examples/rbc/rbc.toml" --out "$scratch/rbc" --quiet ||
     echo "RBC relaxation: exit $?"
   if [ -f "$scratch/rbc/summary.json" ]; then
     read -r wall steps status < <(python3 -c '
@@ -103,8 +124,29 @@ plot for [i=1:3] "$csv" using "particles":(pick(word(geometries,i), column("peak
      2048 dt 3 lc rgb "gray40" title "target: 2 KB per particle"
 GNUPLOT
 echo "wrote $csv, $out/perf-{step,setup,memory}-vs-particles.png and $table"
+
+# The roofline and the two builds side by side: from the docs' CSV files after a full
+# run (the other build's from its own last full run), else from out/ alone.
+figures=$here/docs/figures
 if [ $update_doc = 1 ]; then
-  rkpm_replace_generated "$doc" "$table" "scripts/study scaling -->"
-  cp "$csv" "$out"/perf-{step,setup,memory}-vs-particles.png "$here/docs/figures/"
-  echo "updated docs/figures/perf-* and $doc"
+  if [ $native = 1 ]; then
+    cp "$csv" "$figures/perf-scaling-native.csv"
+  else
+    rkpm_replace_generated "$doc" "$table" "scripts/study scaling -->"
+    cp "$csv" "$out"/perf-{step,setup,memory}-vs-particles.png "$figures/"
+  fi
+  portable_csv=$figures/perf-scaling.csv native_csv=$figures/perf-scaling-native.csv
+  roofline_png=$figures/perf-roofline.png
+else
+  portable_csv=$rkpm_out_root/scaling/perf-scaling.csv native_csv=$rkpm_out_root/scaling-native/perf-scaling.csv
+  roofline_png=$out/perf-roofline.png
+fi
+if [ -f "$portable_csv" ]; then
+  /usr/bin/python3 "$here/scripts/lib/roofline.py" --portable "$portable_csv" \
+    $([ ! -f "$native_csv" ] || echo --native "$native_csv") --png "$roofline_png" --table "$out/builds.md"
+  echo "wrote $roofline_png and $out/builds.md"
+  if [ $update_doc = 1 ]; then
+    rkpm_replace_generated "$doc" "$out/builds.md" "scripts/lib/roofline.py -->"
+    echo "updated docs/figures/perf-* and $doc"
+  fi
 fi

@@ -5,10 +5,10 @@
 # levels included; shape metrics against Evans-Fung, steps and wall time) into
 # out/thickness/{study.csv, table.md, profiles.png}; the default thicknesses also
 # rewrite docs/figures/rbc-thickness-* and the thickness table of
-# docs/verification/rbc.md. About 7 minutes on 2 cores.
+# docs/verification/rbc.md. About 13 minutes on 2 cores.
 # Usage: scripts/study thickness [--coarse] [THICKNESSES_UM...]
 #   --coarse: 0.3 and 0.5 um at face_cells 12 (about a minute); docs untouched.
-#   THICKNESSES_UM default 0.3 0.4 0.5 0.75 (the seed gives 0.5 and "about 0.3").
+#   THICKNESSES_UM default 0.3 0.4 0.5 0.75 1.0 (the seed gives 0.5 and "about 0.3").
 #   RKPM_FACE_CELLS=N runs the shell at face_cells N instead of the scene's.
 #   RKPM_MAX_STEPS caps each run's steps on its own cloud (default 10000): a wall that
 #   does not come to rest within it is reported as not converged.
@@ -26,7 +26,7 @@ if [ "${1:-}" = --coarse ]; then
 elif [ $# -gt 0 ]; then
   thicknesses=("$@")
 else
-  thicknesses=(0.3 0.4 0.5 0.75); [ -z "${RKPM_FACE_CELLS:-}" ] && update_docs=1
+  thicknesses=(0.3 0.4 0.5 0.75 1.0); [ -z "${RKPM_FACE_CELLS:-}" ] && update_docs=1
 fi
 rkpm_build _rkpm >&2 || rkpm_die "building the Python module in $rkpm_build_dir failed"
 PYTHONPATH="$rkpm_build_dir/python" OMP_NUM_THREADS=${OMP_NUM_THREADS:-2} /usr/bin/python3 \
