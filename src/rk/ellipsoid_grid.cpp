@@ -5,25 +5,30 @@
 
 namespace rkpm::rk {
 
+SupportsBox supports_box(const std::vector<Vec3>& X, const std::vector<double>& radius) {
+  SupportsBox box{X.front(), X.front(), 0.0};
+  for (std::size_t i = 0; i < X.size(); ++i) {
+    box.lo = box.lo.cwiseMin(X[i]);
+    box.hi = box.hi.cwiseMax(X[i]);
+    box.a_max = std::max(box.a_max, radius[i]);
+  }
+  return box;
+}
+
 EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<SymmetricEntries>& metric,
-                             const std::vector<double>& radius, const std::vector<double>& min_axis) {
+                             const std::vector<double>& radius, const std::vector<double>& min_axis,
+                             double bucket_fraction) {
   const std::size_t n = X.size();
   if (n == 0) return;
-  Vec3 lo = X.front(), hi = X.front();
-  double a_max = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    lo = lo.cwiseMin(X[i]);
-    hi = hi.cwiseMax(X[i]);
-    a_max = std::max(a_max, radius[i]);
-  }
+  const auto [lo, hi, a_max] = supports_box(X, radius);
   origin_ = lo;
   const Vec3 extent = hi - lo;
 
-  // Buckets of half the median shortest semi-axis (a few particles each), at most about
-  // four per particle: a thin shell fills little of its bounding box.
+  // Buckets of a fraction of the median shortest semi-axis (half: a few particles each),
+  // at most about four per particle: a thin shell fills little of its bounding box.
   std::vector<double> shortest(min_axis);
   std::nth_element(shortest.begin(), shortest.begin() + static_cast<std::ptrdiff_t>(n / 2), shortest.end());
-  bucket_ = 0.5 * shortest[n / 2];
+  bucket_ = bucket_fraction * shortest[n / 2];
   const auto count = [&](double side) {
     double total = 1.0;
     for (int k = 0; k < 3; ++k) total *= std::floor(extent(k) / side) + 1.0;

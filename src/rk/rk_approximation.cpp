@@ -143,7 +143,7 @@ RKApproximation::RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids s
   for (std::size_t i = 0; i < metric_.size(); ++i) metric_[i] = symmetric_entries(supports.metric[i]);
   supports.metric = {};
   min_axis_ = std::move(supports.min_axis);
-  if (!metric_.empty()) grid_ = EllipsoidGrid(X_, metric_, a_, min_axis_);
+  if (!metric_.empty()) grid_ = OrientedGrids(X_, metric_, a_, min_axis_);
 }
 
 SupportEllipsoids RKApproximation::supports_of(const particles::Cloud& cloud, const RKSettings& settings) {
@@ -174,15 +174,6 @@ void sort_ids(std::vector<Index>& ids, std::vector<Index>& buffer) {
     std::swap(from, to);
   }
   if (from != ids.data()) std::copy(from, from + n, ids.data());
-}
-
-// q^2 = r^T G r from G's distinct entries (CandidateSet::g's order). Every q^2 of the
-// approximation is formed here, so a particle is in or out of a support alike
-// wherever it is asked.
-inline double quadratic_form(double g00, double g11, double g22, double g01, double g02, double g12, double rx,
-                             double ry, double rz) {
-  const double q2 = g00 * rx * rx + g11 * ry * ry + g22 * rz * rz + 2.0 * (g01 * rx * ry + g02 * rx * rz + g12 * ry * rz);
-  return q2 > 0.0 ? q2 : 0.0;
 }
 }  // namespace
 
@@ -236,37 +227,12 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
   const double slack = 1.0 + 1e-9;
   out.id.clear();
   if (!grid_.empty() && grid_.covers(reach)) {
-    // Ellipsoids: the grid's rows (rk/ellipsoid_grid.hpp), tested in the order it
-    // stores them, from contiguous arrays. A refined thin wall's ball holds several
-    // times the particles its supports can reach, and the tree hands them out one by one
-    // from wherever it keeps them; the grid's contiguous rows make the large RBC shell's
-    // set-up much faster (docs/verification/performance.md measures it).
-    grid_.ranges(centre, reach, ball, out.ranges);
-    std::size_t visited = 0;
-    for (const auto& range : out.ranges) visited += range.second - range.first;
-    // Written in place and counted without a branch: about half the visited particles
-    // pass, which a branch would mispredict; the arrays are local pointers, so the
-    // stores to the list do not make the compiler reload them.
-    out.id.resize(visited);
-    Index* kept = out.id.data();
-    std::size_t m = 0;
-    const float *g0 = grid_.g()[0].data(), *g1 = grid_.g()[1].data(), *g2 = grid_.g()[2].data();
-    const float *g3 = grid_.g()[3].data(), *g4 = grid_.g()[4].data(), *g5 = grid_.g()[5].data();
-    const float* inv_b = grid_.inverse_min_axis().data();
-    const Index* order = grid_.order().data();
-    const Vec3* X = X_.data();
-    const double cx = centre.x(), cy = centre.y(), cz = centre.z();
-    const double widened = slack * (1.0 + grid_.test_slack());
-    for (const auto& [first, last] : out.ranges)
-      for (std::uint32_t k = first; k < last; ++k) {
-        const Index id = order[k];
-        const Vec3& P = X[id];
-        const double q2 = quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P.x(), cy - P.y(), cz - P.z());
-        const double limit = (1.0 + reach * inv_b[k]) * widened;
-        kept[m] = id;
-        m += q2 < limit * limit ? 1 : 0;
-      }
-    out.id.resize(m);
+    // Ellipsoids: the grids of their orientations (rk/oriented_grids.hpp), tested in the
+    // order they store them, from contiguous arrays. A refined thin wall's ball holds
+    // several times the particles its supports can reach, and the tree hands them out
+    // one by one from wherever it keeps them; the grids visit little more than what
+    // reaches (docs/verification/performance.md measures the set-up).
+    grid_.candidates(centre, reach, ball, slack, out.id, out.ranges);
   } else {
     auto& found = out.found;
     tree().query_unordered(centre, ball, found);

@@ -1,10 +1,12 @@
 // The bucket grid that finds the particles whose ellipsoidal supports can reach points
-// near a centre (rk/ellipsoid_grid.hpp), and RKApproximation::candidates built on it:
-// nothing that reaches a point within `reach` of the centre may be missed, for centres
-// inside and outside the cloud, on a tilted thin wall and on a jittered block, and a
-// reach the grid does not cover falls back to the tree with the same contract.
+// near a centre (rk/ellipsoid_grid.hpp), its grids per orientation (rk/oriented_grids.hpp),
+// and RKApproximation::candidates built on them: nothing that reaches a point within
+// `reach` of the centre may be missed, for centres inside and outside the cloud, on a
+// tilted thin wall, on a refined one whose supports are needles and on a jittered block,
+// and a reach the grids do not cover falls back to the tree with the same contract.
 #include "clouds.hpp"
 #include "rkpm/rk/ellipsoid_grid.hpp"
+#include "rkpm/rk/oriented_grids.hpp"
 #include "rkpm/rk/rk_approximation.hpp"
 
 #include <gtest/gtest.h>
@@ -26,6 +28,17 @@ particles::Cloud thin_shell() {
   spec.thickness = 0.4e-6;
   spec.layers = 3;
   spec.face_cells = 24;
+  return particles::make_shell(spec);
+}
+
+// The same wall refined in its plane until its supports are needles across it (median
+// longest over shortest semi-axis about 6): the grids per orientation take over.
+particles::Cloud needle_shell() {
+  particles::ShellSpec spec;
+  spec.semi_axes = Vec3(2e-6, 2e-6, 1e-6);
+  spec.thickness = 0.6e-6;
+  spec.layers = 3;
+  spec.face_cells = 32;
   return particles::make_shell(spec);
 }
 
@@ -115,15 +128,50 @@ TEST(EllipsoidGrid, MissesNoSupportInAJitteredBlock) {
   expect_no_particle_missed(test::jittered_block(6, 0.25), 0.4);
 }
 
-// The thin shell's ellipsoidal supports and their approximation.
-class EllipsoidGridOnAThinWall : public ::testing::Test {
+// On needles across a refined wall the grids per orientation miss nothing that reaches,
+// and test fewer particles than the one grid's box holds (the reason they exist).
+TEST(OrientedGrids, MissNoNeedleAndTestFewerThanOneGrid) {
+  const particles::Cloud cloud = needle_shell();
+  const auto supports = ellipsoidal_supports(cloud, 2.0);
+  std::vector<SymmetricEntries> metric;
+  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
+  const OrientedGrids grids(cloud.X, metric, supports.radius, supports.min_axis);
+  const EllipsoidGrid one(cloud.X, metric, supports.radius, supports.min_axis);
+  ASSERT_GT(grids.classes(), 10u);  // the oriented path, not one class
+  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+  std::mt19937 rng(5);
+  std::vector<Index> kept;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
+  std::size_t tested = 0, visited_by_one = 0, needed = 0;
+  for (double reach : {0.0, 0.3 * a_max}) {
+    ASSERT_TRUE(grids.covers(reach));
+    for (const Vec3& c : centres(cloud.X, rng, 24)) {
+      const double ball = (a_max + reach) * (1.0 + 1e-9);
+      kept.clear();
+      tested += grids.candidates(c, reach, ball, 1.0 + 1e-9, kept, ranges);
+      visited_by_one += in_ranges(one, c, reach, ball).size();
+      const std::set<Index> got(kept.begin(), kept.end());
+      EXPECT_EQ(got.size(), kept.size()) << "a particle listed twice";
+      for (Index j : reaching(cloud.X, supports.metric, c, reach, rng)) {
+        EXPECT_TRUE(got.count(j)) << "reach " << reach << ": particle " << j << " reaches (" << c.transpose()
+                                  << ") but is not a candidate";
+        ++needed;
+      }
+    }
+  }
+  EXPECT_GT(needed, 0u);
+  EXPECT_LT(tested, visited_by_one / 2) << "tested " << tested << ", one grid's box " << visited_by_one;
+}
+
+// The thin shells' ellipsoidal supports and their approximation.
+class EllipsoidGridOnAThinWall : public ::testing::TestWithParam<bool> {
  protected:
   static RKSettings ellipsoids() {
     RKSettings settings;
     settings.shape = SupportShape::Ellipsoid;
     return settings;
   }
-  const particles::Cloud cloud = thin_shell();
+  const particles::Cloud cloud = GetParam() ? needle_shell() : thin_shell();
   const SupportEllipsoids supports = ellipsoidal_supports(cloud, 2.0);
   const RKApproximation rk{cloud, ellipsoids()};
   const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
@@ -132,7 +180,7 @@ class EllipsoidGridOnAThinWall : public ::testing::Test {
 // The contract of RKApproximation::candidates, through the grid and (for a reach the
 // grid does not cover) through the tree: every particle that reaches a point within
 // `reach` of the centre is a candidate, once, and the ids are sorted.
-TEST_F(EllipsoidGridOnAThinWall, CandidatesHoldEverySupportThatReaches) {
+TEST_P(EllipsoidGridOnAThinWall, CandidatesHoldEverySupportThatReaches) {
   std::mt19937 rng(11);
   CandidateSet set;
   for (double reach : {0.0, 0.25 * a_max, 3.0 * a_max}) {
@@ -155,11 +203,11 @@ TEST_F(EllipsoidGridOnAThinWall, CandidatesHoldEverySupportThatReaches) {
 // The grid and the tree must give the same shape functions bit for bit: a candidate
 // list may hold extra particles, but their kernel is zero and the sums run over the
 // same particles in the same (id) order. The tree answers a reach beyond the grid's.
-TEST_F(EllipsoidGridOnAThinWall, ShapeFunctionsAreTheTreesBitForBit) {
+TEST_P(EllipsoidGridOnAThinWall, ShapeFunctionsAreTheTreesBitForBit) {
   CandidateSet by_grid, by_tree;
   ShapeValues a, b;
   std::size_t compared = 0;
-  for (std::size_t i = 0; i < cloud.size(); i += 7) {
+  for (std::size_t i = 0; i < cloud.size(); i += cloud.size() / 1500 + 1) {
     const Vec3 x = cloud.X[i] + Vec3(0.01, -0.02, 0.015) * a_max;
     rk.candidates(x, 0.0, by_grid);
     rk.candidates(x, 3.0 * a_max, by_tree);
@@ -175,3 +223,6 @@ TEST_F(EllipsoidGridOnAThinWall, ShapeFunctionsAreTheTreesBitForBit) {
   }
   EXPECT_GT(compared, 100u);
 }
+
+// false: the tilted wall (one grid); true: the needles (grids per orientation).
+INSTANTIATE_TEST_SUITE_P(OneGridAndOrientedGrids, EllipsoidGridOnAThinWall, ::testing::Bool());

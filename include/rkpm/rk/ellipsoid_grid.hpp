@@ -45,17 +45,35 @@ inline SymmetricEntries symmetric_entries(const Mat3& G) {
   return {G(0, 0), G(1, 1), G(2, 2), G(1, 0), G(2, 0), G(2, 1)};
 }
 
+// q^2 = r^T G r from G's distinct entries (in symmetric_entries' order). Every q^2 of
+// the approximation and of its candidate tests is formed here, so a particle is in or
+// out of a support alike wherever it is asked.
+inline double quadratic_form(double g00, double g11, double g22, double g01, double g02, double g12, double rx,
+                             double ry, double rz) {
+  const double q2 = g00 * rx * rx + g11 * ry * ry + g22 * rz * rz + 2.0 * (g01 * rx * ry + g02 * rx * rz + g12 * ry * rz);
+  return q2 > 0.0 ? q2 : 0.0;
+}
+
+// The box of the particles' positions and their longest semi-axis (non-empty X).
+struct SupportsBox {
+  Vec3 lo, hi;
+  double a_max = 0.0;
+};
+SupportsBox supports_box(const std::vector<Vec3>& X, const std::vector<double>& radius);
+
 class EllipsoidGrid {
  public:
   EllipsoidGrid() = default;
   // metric[J] = G_J, radius[J] its longest semi-axis, min_axis[J] its shortest. Keeps
   // copies of what the queries read, in bucket order.
+  // Buckets of `bucket_fraction` of the median shortest semi-axis.
   EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<SymmetricEntries>& metric,
-                const std::vector<double>& radius, const std::vector<double>& min_axis);
+                const std::vector<double>& radius, const std::vector<double>& min_axis, double bucket_fraction = 0.5);
 
   bool empty() const { return order_.empty(); }
   // Whether a query with this reach stays within one coarse neighbourhood.
   bool covers(double reach) const { return reach <= max_reach_; }
+  double max_reach() const { return max_reach_; }
 
   // Ranges [first, last) of positions in bucket order that hold every particle whose
   // support can reach a point within `reach` of c, and also lies within `ball` of c

@@ -18,9 +18,9 @@
 #pragma once
 
 #include "rkpm/common/types.hpp"
-#include "rkpm/rk/ellipsoid_grid.hpp"
 #include "rkpm/rk/kernel.hpp"
 #include "rkpm/rk/neighbor_search.hpp"
+#include "rkpm/rk/oriented_grids.hpp"
 #include "rkpm/rk/support_bound.hpp"
 
 #include <array>
@@ -157,7 +157,7 @@ class RKApproximation {
   mutable std::once_flag tree_built_;
   mutable std::unique_ptr<NeighborSearch> search_;
   SupportBound bound_;  // the largest a_I near a point, for the query radius
-  EllipsoidGrid grid_;  // ellipsoidal supports: the query that follows their shape
+  OrientedGrids grid_;  // ellipsoidal supports: the query that follows their shape
 };
 
 }  // namespace rkpm::rk
