@@ -359,10 +359,8 @@ void shape_function_rows(const RKApproximation& rk, const std::vector<Vec3>& poi
         const Vec3& centre = X[static_cast<std::size_t>(owner[p])];
         const auto owner_candidates = [&]() -> const CandidateSet& {
           if (!have_candidates) {
-            double reach = 0.0;
-            for (group_end = p; group_end < end && owner[group_end] == owner[p]; ++group_end)
-              reach = std::max(reach, (points[group_end] - centre).norm());
-            rk.candidates(centre, reach, near_owner);
+            for (group_end = p; group_end < end && owner[group_end] == owner[p];) ++group_end;
+            rk.candidates(centre, points.data() + p, group_end - p, near_owner);
             have_candidates = true;
           }
           return near_owner;
@@ -458,14 +456,12 @@ void build_gradient_rows(const particles::Cloud& cloud, const RKApproximation& r
         quadrature.collect(facets, rule, whole_cell);
         double volume = 0.0;
         for (const auto& f : facets) volume += f.point.dot(f.area) / 3.0;  // divergence theorem: exact, closed cell
-        // One tree query for the whole cell (its points lie within `reach`), and only
+        // One candidate query for the whole cell (around its points), and only
         // if one of its points is not stored yet.
         bool have_candidates = false;
         const auto cell_candidates = [&]() -> const CandidateSet& {
           if (!have_candidates) {
-            double reach = 0.0;
-            for (const Vec3& p : quadrature.point) reach = std::max(reach, (p - XL).norm());
-            rk.candidates(XL, reach, near_cell);
+            rk.candidates(XL, quadrature.point.data(), quadrature.point.size(), near_cell);
             have_candidates = true;
           }
           return near_cell;

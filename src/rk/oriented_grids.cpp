@@ -164,7 +164,8 @@ std::array<int, 3> OrientedGrids::region_of(const Vec3& x) const {
 }
 
 std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, double slack, std::vector<Index>& kept,
-                                      std::vector<std::pair<std::uint32_t, std::uint32_t>>& ranges) const {
+                                      std::vector<std::pair<std::uint32_t, std::uint32_t>>& ranges, const Vec3* points,
+                                      std::size_t count) const {
   std::size_t tested = 0;
   const bool oriented = !region_first_.empty();
   const auto query = [&](const OrientationClass& cl) {
@@ -188,14 +189,33 @@ std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, 
     const Vec3* P = cl.X.data();
     const double cx = cf.x(), cy = cf.y(), cz = cf.z();
     const double widened = slack * (1.0 + cl.grid.test_slack());
-    for (const auto& [first, last] : ranges)
-      for (std::uint32_t k = first; k < last; ++k) {
-        const double q2 =
-            quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P[k].x(), cy - P[k].y(), cz - P[k].z());
-        const double limit = (1.0 + reach * inv_b[k]) * widened;
-        out[m] = ids[k];
-        m += q2 < limit * limit ? 1 : 0;
-      }
+    if (count == 0) {
+      for (const auto& [first, last] : ranges)
+        for (std::uint32_t k = first; k < last; ++k) {
+          const double q2 =
+              quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P[k].x(), cy - P[k].y(), cz - P[k].z());
+          const double limit = (1.0 + reach * inv_b[k]) * widened;
+          out[m] = ids[k];
+          m += q2 < limit * limit ? 1 : 0;
+        }
+    } else {
+      // The points' largest offsets along the frame's axes, and their products.
+      Vec3 e = Vec3::Zero();
+      for (std::size_t p = 0; p < count; ++p)
+        e = e.cwiseMax((oriented ? Vec3(cl.to_frame * (points[p] - c)) : Vec3(points[p] - c)).cwiseAbs());
+      const double e00 = e(0) * e(0), e11 = e(1) * e(1), e22 = e(2) * e(2);
+      const double e01 = e(0) * e(1), e02 = e(0) * e(2), e12 = e(1) * e(2);
+      for (const auto& [first, last] : ranges)
+        for (std::uint32_t k = first; k < last; ++k) {
+          const double q2 =
+              quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P[k].x(), cy - P[k].y(), cz - P[k].z());
+          const double spread = std::sqrt(g0[k] * e00 + g1[k] * e11 + g2[k] * e22 +
+                                          2.0 * (std::abs(g3[k]) * e01 + std::abs(g4[k]) * e02 + std::abs(g5[k]) * e12));
+          const double limit = (1.0 + std::min(reach * inv_b[k], spread)) * widened;
+          out[m] = ids[k];
+          m += q2 < limit * limit ? 1 : 0;
+        }
+    }
     kept.resize(start + m);
     tested += visited;
   };

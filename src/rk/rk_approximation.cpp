@@ -216,6 +216,17 @@ bool RKApproximation::evaluate(const Vec3& x, ShapeValues& out, bool with_gradie
 }
 
 void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet& out) const {
+  collect_candidates(centre, reach, nullptr, 0, out);
+}
+
+void RKApproximation::candidates(const Vec3& centre, const Vec3* points, std::size_t count, CandidateSet& out) const {
+  double reach = 0.0;
+  for (std::size_t p = 0; p < count; ++p) reach = std::max(reach, (points[p] - centre).norm());
+  collect_candidates(centre, reach, points, count, out);
+}
+
+void RKApproximation::collect_candidates(const Vec3& centre, double reach, const Vec3* points, std::size_t count,
+                                         CandidateSet& out) const {
   // A point within `reach` of the centre is reached only by particles within
   // a_I + reach of the centre, a_I at most the largest support near it; the relative
   // slack covers the rounding of that bound.
@@ -232,7 +243,7 @@ void RKApproximation::candidates(const Vec3& centre, double reach, CandidateSet&
     // several times the particles its supports can reach, and the tree hands them out
     // one by one from wherever it keeps them; the grids visit little more than what
     // reaches (docs/verification/performance.md measures the set-up).
-    grid_.candidates(centre, reach, ball, slack, out.id, out.ranges);
+    grid_.candidates(centre, reach, ball, slack, out.id, out.ranges, points, count);
   } else {
     auto& found = out.found;
     tree().query_unordered(centre, ball, found);

@@ -163,6 +163,47 @@ TEST(OrientedGrids, MissNoNeedleAndTestFewerThanOneGrid) {
   EXPECT_LT(tested, visited_by_one / 2) << "tested " << tested << ", one grid's box " << visited_by_one;
 }
 
+// Given the points themselves (a cell's corners, elongated across the wall as the
+// refined shell's are), the grids keep every particle that reaches one of them, and no
+// more than the test by their distance alone keeps.
+TEST(OrientedGrids, KeepEverySupportThatReachesOneOfThePoints) {
+  const particles::Cloud cloud = needle_shell();
+  const RKSettings settings = [] {
+    RKSettings s;
+    s.shape = SupportShape::Ellipsoid;
+    return s;
+  }();
+  const RKApproximation rk(cloud, settings);
+  const auto supports = ellipsoidal_supports(cloud, 2.0);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  CandidateSet by_points, by_reach;
+  std::size_t needed = 0, kept_by_points = 0, kept_by_reach = 0;
+  for (std::size_t i = 0; i < cloud.size(); i += cloud.size() / 40) {
+    const Vec3 c = cloud.X[i];
+    // Eight points in a box 0.3 um along the radius and 0.05 um across it.
+    const Vec3 along = c.normalized(), across = along.unitOrthogonal(), third = along.cross(across);
+    std::vector<Vec3> points;
+    for (int k = 0; k < 8; ++k) points.push_back(c + 0.15e-6 * unit(rng) * along + 0.025e-6 * (unit(rng) * across + unit(rng) * third));
+    rk.candidates(c, points.data(), points.size(), by_points);
+    double reach = 0.0;
+    for (const Vec3& p : points) reach = std::max(reach, (p - c).norm());
+    rk.candidates(c, reach, by_reach);
+    const std::set<Index> got(by_points.id.begin(), by_points.id.end());
+    for (std::size_t j = 0; j < cloud.size(); ++j)
+      for (const Vec3& p : points)
+        if (squared_q(supports.metric[j], p - cloud.X[j]) < 1.0) {
+          EXPECT_TRUE(got.count(static_cast<Index>(j))) << "particle " << j << " reaches a point near particle " << i;
+          ++needed;
+          break;
+        }
+    kept_by_points += by_points.size();
+    kept_by_reach += by_reach.size();
+  }
+  EXPECT_GT(needed, 0u);
+  EXPECT_LT(kept_by_points, kept_by_reach) << "the points' extents should keep fewer than their distance alone";
+}
+
 // The thin shells' ellipsoidal supports and their approximation.
 class EllipsoidGridOnAThinWall : public ::testing::TestWithParam<bool> {
  protected:

@@ -51,9 +51,15 @@ class OrientedGrids {
   // `reach` of c and that lie within `ball` of c (an upper bound of a_J + reach), by the
   // test q_J(c) < (1 + reach / b_J) * slack with b_J the shortest semi-axis, widened by
   // the float storage's rounding: a superset of those that reach, in no particular order.
-  // Returns how many particles it tested. Requires covers(reach).
+  // Given the `count` points at `points` (all within `reach` of c), the superset of those
+  // that reach one of them, by the tighter of that test and
+  // q_J(c) < (1 + sqrt(sum_ij |G_J,ij| e_i e_j)) * slack, e_i the points' largest offset
+  // from c along axis i of the class's frame: q_J is a norm, so q_J(p) <= q_J(c) + |p - c|_G,
+  // and |v|_G^2 <= sum_ij |G_ij| |v_i| |v_j|. Returns how many particles it tested.
+  // Requires covers(reach).
   std::size_t candidates(const Vec3& c, double reach, double ball, double slack, std::vector<Index>& kept,
-                         std::vector<std::pair<std::uint32_t, std::uint32_t>>& ranges) const;
+                         std::vector<std::pair<std::uint32_t, std::uint32_t>>& ranges, const Vec3* points = nullptr,
+                         std::size_t count = 0) const;
 
  private:
   struct OrientationClass {

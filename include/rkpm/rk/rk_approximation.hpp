@@ -122,6 +122,11 @@ class RKApproximation {
   // with one tree query; then `evaluate_among` evaluates at such a point from that set
   // alone, with the same result as `evaluate` (same neighbours, same order).
   void candidates(const Vec3& centre, double reach, CandidateSet& out) const;
+  // The same for the `count` points at `points` alone (reach: their largest distance from
+  // the centre). On ellipsoidal supports the test then also bounds how far each support
+  // must reach by the points' extent along each axis of its own shape (OrientedGrids),
+  // which keeps far fewer of a cell elongated across a thin wall than a ball of `reach`.
+  void candidates(const Vec3& centre, const Vec3* points, std::size_t count, CandidateSet& out) const;
   bool evaluate_among(const Vec3& x, const CandidateSet& candidates, ShapeValues& out, bool with_gradient) const;
 
   const std::vector<Vec3>& points() const { return X_; }
@@ -143,6 +148,8 @@ class RKApproximation {
   bool evaluate_basis(const Vec3& x, const CandidateSet& candidates, ShapeValues& out, bool with_gradient) const;
 
   RKApproximation(const std::vector<Vec3>& X, SupportEllipsoids supports, RKSettings settings);
+  void collect_candidates(const Vec3& centre, double reach, const Vec3* points, std::size_t count,
+                          CandidateSet& out) const;
   static SupportEllipsoids supports_of(const particles::Cloud& cloud, const RKSettings& settings);
 
   const std::vector<Vec3>& X_;
