@@ -188,15 +188,20 @@ std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, 
     const Vec3* P = cl.X.data();
     const double cx = cf.x(), cy = cf.y(), cz = cf.z();
     const double widened = slack * (1.0 + cl.grid.test_slack());
-    if (count == 0) {
+    // The test of each listed particle; reach_in_q(k): how far past its support, in its
+    // own norm, particle k must reach.
+    const auto sweep = [&](const auto& reach_in_q) {
       for (const auto& [first, last] : ranges)
         for (std::uint32_t k = first; k < last; ++k) {
           const double q2 =
               quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P[k].x(), cy - P[k].y(), cz - P[k].z());
-          const double limit = (1.0 + reach * inv_b[k]) * widened;
+          const double limit = (1.0 + reach_in_q(k)) * widened;
           out[m] = ids[k];
           m += q2 < limit * limit ? 1 : 0;
         }
+    };
+    if (count == 0) {
+      sweep([&](std::uint32_t k) { return reach * inv_b[k]; });
     } else {
       // The points' largest offsets along the frame's axes, and their products.
       Vec3 e = Vec3::Zero();
@@ -204,16 +209,11 @@ std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, 
         e = e.cwiseMax((oriented ? Vec3(cl.to_frame * (points[p] - c)) : Vec3(points[p] - c)).cwiseAbs());
       const double e00 = e(0) * e(0), e11 = e(1) * e(1), e22 = e(2) * e(2);
       const double e01 = e(0) * e(1), e02 = e(0) * e(2), e12 = e(1) * e(2);
-      for (const auto& [first, last] : ranges)
-        for (std::uint32_t k = first; k < last; ++k) {
-          const double q2 =
-              quadratic_form(g0[k], g1[k], g2[k], g3[k], g4[k], g5[k], cx - P[k].x(), cy - P[k].y(), cz - P[k].z());
-          const double spread = std::sqrt(g0[k] * e00 + g1[k] * e11 + g2[k] * e22 +
-                                          2.0 * (std::abs(g3[k]) * e01 + std::abs(g4[k]) * e02 + std::abs(g5[k]) * e12));
-          const double limit = (1.0 + std::min(reach * inv_b[k], spread)) * widened;
-          out[m] = ids[k];
-          m += q2 < limit * limit ? 1 : 0;
-        }
+      sweep([&](std::uint32_t k) {
+        const double spread = std::sqrt(g0[k] * e00 + g1[k] * e11 + g2[k] * e22 +
+                                        2.0 * (std::abs(g3[k]) * e01 + std::abs(g4[k]) * e02 + std::abs(g5[k]) * e12));
+        return std::min(reach * inv_b[k], spread);
+      });
     }
     kept.resize(start + m);
     tested += visited;
