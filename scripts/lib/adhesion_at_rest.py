@@ -15,6 +15,7 @@ undeformed sphere would rest at the gap z0 on the undeformed block.
 
 prints one line per run."""
 import argparse
+import functools
 import json
 import math
 import tomllib
@@ -23,6 +24,7 @@ import numpy as np
 
 import contact_theory as T
 import contact_traction
+import derjaguin_contact
 from rbc_midsurface import last_frame, read_vtu
 
 
@@ -66,6 +68,7 @@ class AdhesionScene:
         self.E_star = T.combined_modulus(moduli[0][0], moduli[0][1], moduli[1][0], moduli[1][1])
         contact = next(t for t in scene["term"] if t["type"] == "contact")
         self.law = T.contact_term_law(contact["epsilon"], contact["s0"], contact["beta"], contact.get("cutoff"))
+        self.law_parameters = (contact["epsilon"], contact["s0"], tuple(contact["beta"]), contact.get("cutoff"))
         self.s0 = contact["s0"]
 
     def theory(self):
@@ -81,6 +84,12 @@ class AdhesionScene:
             md = T.maugis_dugdale(self.R, law.w, law.sigma0, self.E_star)
             edge = T.md_zero_pressure_radius(md, self.R, law.sigma0, self.E_star)
         return sphere, edge
+
+    def law_edge(self, profile):
+        """The edge of the compressive zone [m] by the self-consistent solution with the
+        contact law's own traction (`derjaguin_contact`), for the paraboloid the theories
+        assume or the sphere's own profile."""
+        return _law_edge(self.R, self.E_star, self.law_parameters, profile)
 
     def measure(self, run_dir):
         """The run's compressive-zone edge [m], the normal force inside it [N], and the
@@ -102,6 +111,12 @@ class AdhesionScene:
         return self.block_top + self.law.z0 + self.R
 
 
+@functools.lru_cache(maxsize=None)
+def _law_edge(R, E_star, law_parameters, profile):
+    epsilon, s0, beta, cutoff = law_parameters
+    return derjaguin_contact.adhered_sphere(R, E_star, epsilon, s0, beta, cutoff, profile=profile).compressive_radius
+
+
 def compare(scene_path, run_dir):
     """One run against the theory: a dict of the measures, the theory and the errors."""
     scene = AdhesionScene(scene_path)
@@ -118,6 +133,8 @@ def compare(scene_path, run_dir):
         "contact_radius_theory": {"JKR": sphere.a_jkr, "DMT": sphere.a_dmt, "MD": sphere.a_md}[sphere.regime],
         "core_z": core_z, "approach_sim": scene.resting_centre() - core_z, "approach_theory": delta_theory,
         "compressive_force": force,
+        "a_law_paraboloid": scene.law_edge("paraboloid"), "a_law_sphere": scene.law_edge("sphere"),
+        "rel_error_law": edge / scene.law_edge("sphere") - 1.0,
     }
 
 
