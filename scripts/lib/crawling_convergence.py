@@ -11,7 +11,15 @@ the mirrored gradient. A run folder that already holds a summary.json is kept.
 With --long, the graded runs alone go on to LONG_T_END (2.5 times the shipped 12 us),
 so that the drift velocity's approach to steady is seen at every resolution; the
 controls are exact by symmetry (mirrored) or zero to round-off (uniform) at 12 us and
-are not repeated."""
+are not repeated.
+
+With --split, the graded run to LONG_T_END with the cell and the substrate resolved
+independently (SPLIT_RUNS): the cell at 17 cells across on blocks from the shipped 40 to
+68 cells across, and at 29 on the coarsest and finest of them, and the shipped pair with
+the cell's start moved along y by a quarter, a half and three quarters of the block's
+spacing: which body's resolution, which ratio of the two clouds' spacings and which
+registry of the two lattices moves the crawl. The runs that match the
+ladder's pairs are the --long runs (their folders are shared)."""
 import csv
 import json
 import os
@@ -29,20 +37,28 @@ FULL_CELLS = (17, 21, 25, 29)
 COARSE_CELLS = (17, 21)
 SHIPPED_CELLS = 17
 LONG_T_END = 30e-6
+# (cells across the cell, the block's cells along x and y (its cells along z follow), the
+# cell's start moved along y by this fraction of the block's spacing)
+SPLIT_RUNS = ((17, 40, 0.0), (17, 44, 0.0), (17, 48, 0.0), (17, 52, 0.0), (17, 56, 0.0), (17, 60, 0.0), (17, 64, 0.0),
+              (17, 68, 0.0), (29, 40, 0.0), (29, 68, 0.0), (17, 40, 0.25), (17, 40, 0.5), (17, 40, 0.75))
 CSV_COLUMNS = ["run", "cells", "particles", "drift_m", "velocity_m_per_s", "wall_s", "substrate_cells",
                "velocity_earlier_m_per_s", "drift_x_m", "t_end_s", "steps", "energy_error"]
 
 
-def variant(cells, grading, t_end=None):
-    """The scene at `cells` across the cell, the block refined with it, and `grading`
-    (run to `t_end` when given, else the shipped 12 us)."""
+def variant(cells, grading, t_end=None, block_cells=None, shift=0.0):
+    """The scene at `cells` across the cell, the block refined with it (or with
+    `block_cells` along x and y, its cells along z in the shipped proportion), the cell's
+    start moved along y by `shift` block spacings, and `grading` (run to `t_end` when
+    given, else the shipped 12 us)."""
     scene = load_scene(SCENE)
     if t_end is not None:
         scene["integrator"]["t_end"] = t_end
     cell, block = scene["body"]
     shipped = block["cloud"]["cells"]
     cell["cloud"]["cells"] = cells
-    block["cloud"]["cells"] = [round(n * cells / SHIPPED_CELLS) for n in shipped]
+    scale = cells / SHIPPED_CELLS if block_cells is None else block_cells / shipped[0]
+    block["cloud"]["cells"] = [round(n * scale) for n in shipped]
+    cell["cloud"]["center"][1] += shift * block["cloud"]["size"][1] / block["cloud"]["cells"][1]
     block["material"]["grade_a"], block["material"]["grade_b"] = grading
     scene["scene"]["name"] = f"crawling_c{cells}"
     return scene
@@ -159,12 +175,97 @@ def plot(rows, est, path):
     fig.savefig(path, dpi=110)
 
 
+def spacings(scene):
+    """The cell's and the block's lateral particle spacings [m] of a crawling scene."""
+    cell, block = scene["body"]
+    return (2.0 * cell["cloud"]["radius"] / cell["cloud"]["cells"],
+            block["cloud"]["size"][0] / block["cloud"]["cells"][0])
+
+
+def split_table(rows, scenes, loads):
+    """The generated Markdown of --split: the crawl with each body resolved on its own."""
+    s0 = load_scene(SCENE)["term"][0]["s0"]
+    lines = ["| cells across the cell | substrate cells | substrate spacing / s0 | substrate spacing / cell spacing | "
+             "start moved along y [substrate spacings] | particles | velocity, last quarter [nm/us] | "
+             "quarter before [nm/us] | drift along y [nm] | steps | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for (_, _, shift), r, scene in zip(SPLIT_RUNS, rows, scenes):
+        cell, block = spacings(scene)
+        lines.append(f"| {r['cells']} | {r['substrate_cells']} | {block / s0:.3f} | {block / cell:.3f} | {shift:g} | "
+                     f"{r['particles']:,} | {r['velocity_m_per_s'] * 1e3:.3f} | "
+                     f"{r['velocity_earlier_m_per_s'] * 1e3:.3f} | {r['drift_m'] * 1e9:.2f} | {r['steps']} | "
+                     f"{r['wall_s']:.0f} |")
+    v = {run: r["velocity_m_per_s"] for run, r in zip(SPLIT_RUNS, rows)}
+    coarse = (17, 40, 0.0)
+    lines.append("")
+    for run, name in (((17, 68, 0.0), "the substrate alone"), ((29, 40, 0.0), "the cell alone"),
+                      ((29, 68, 0.0), "both")):
+        lines.append(f"- refining {name} (cell 17 -> 29 cells, block 40 -> 68): velocity x {v[run] / v[coarse]:.3f} "
+                     f"({100 * (v[run] / v[coarse] - 1):+.1f} %)")
+    for label, runs in (("the cell at 17 cells on the eight blocks", [k for k in SPLIT_RUNS if k[0] == 17 and k[2] == 0]),
+                        ("the cell at 17 cells on the 40-cell block, its start at four places",
+                         [k for k in SPLIT_RUNS if k[:2] == (17, 40)])):
+        values = np.array([v[k] for k in runs]) * 1e3
+        lines.append(f"- {label}: velocity {values.mean():.2f} nm/us on average, from {values.min():.2f} to "
+                     f"{values.max():.2f} (standard deviation {values.std(ddof=1):.2f}, "
+                     f"{100 * values.std(ddof=1) / values.mean():.0f} %)")
+    lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
+    return "\n".join(lines) + "\n"
+
+
+def split_plot(rows, scenes, path):
+    """The steady velocity against the ratio of the block's spacing to the cell's, one
+    line per cell resolution."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.5, 4.4))
+    for cells, marker in ((17, "o-"), (29, "s-")):
+        mine = [(spacings(scene), r) for (c, _, shift), r, scene in zip(SPLIT_RUNS, rows, scenes)
+                if c == cells and shift == 0.0]
+        ax.plot([b / c for (c, b), _ in mine], [r["velocity_m_per_s"] * 1e3 for _, r in mine], marker,
+                label=f"cell {cells} cells across")
+    moved = [(spacings(scene), r) for (_, _, shift), r, scene in zip(SPLIT_RUNS, rows, scenes) if shift]
+    if moved:
+        ax.plot([b / c for (c, b), _ in moved], [r["velocity_m_per_s"] * 1e3 for _, r in moved], "o", mfc="none",
+                color="C0", label="cell 17, its start moved by 1/4, 1/2, 3/4 of the block's spacing")
+    ax.set_xlabel("substrate spacing / cell spacing")
+    ax.set_ylabel(f"drift velocity over the last quarter of {LONG_T_END * 1e6:g} us [nm/us]")
+    ax.legend(fontsize=8, loc="upper center")
+    ax.grid(True, alpha=0.3)
+    ax.set_title("Crawl with the cell and the substrate resolved independently")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def run_split(args):
+    rows, scenes, loads = [], [], []
+    suffix = f"_t{LONG_T_END * 1e6:g}us"
+    for cells, block_cells, shift in SPLIT_RUNS:
+        scene = variant(cells, RUNS["graded"], LONG_T_END, block_cells, shift)
+        matched = scene["body"][1]["cloud"]["cells"] == variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]
+        name = f"graded_c{cells}" + ("" if matched else f"_b{block_cells}") + (f"_y{shift:g}" if shift else "") + suffix
+        folder = run_scene(args.rkpm, scene, os.path.join(args.out, name), args.threads)
+        rows.append(measure("graded", cells, folder, scene))
+        scenes.append(scene)
+        loads.append(study_load(folder))
+        print(f"cell {cells}, substrate {rows[-1]['substrate_cells']}: velocity "
+              f"{rows[-1]['velocity_m_per_s'] * 1e3:.3f} nm/us, {rows[-1]['wall_s']:.0f} s", flush=True)
+    write_results(args.out, "crawling_convergence_split", rows, CSV_COLUMNS, split_table(rows, scenes, loads),
+                  lambda path: split_plot(rows, scenes, path))
+    return 0
+
+
 def main(argv=None):
     parser = study_parser("crawling drift at several resolutions")
     parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
     parser.add_argument("--long", action="store_true",
                         help=f"the graded runs only, to {LONG_T_END * 1e6:g} us (results: crawling_convergence_long)")
+    parser.add_argument("--split", action="store_true",
+                        help="the graded run to the long end with the cell or the substrate refined alone")
     args = parser.parse_args(argv)
+    if args.split:
+        return run_split(args)
     rows, loads = [], []
     runs = {"graded": RUNS["graded"]} if args.long else RUNS
     t_end, suffix = (LONG_T_END, f"_t{LONG_T_END * 1e6:g}us") if args.long else (None, "")

@@ -9,11 +9,16 @@
 #   the generated table (crawling-convergence) of docs/verification/crawling.md
 # The runs go to out/crawling-convergence/ (a run folder holding a summary.json is kept:
 # delete it to rerun). About 50 minutes on 2 cores.
-# Usage: scripts/study crawling-convergence [--coarse] [--long]
+# Usage: scripts/study crawling-convergence [--coarse] [--long | --split]
 #   --coarse: 17 and 21 cells only (about 8 minutes); docs untouched.
 #   --long: the graded runs alone, to 30 us instead of 12 (about 30 minutes), writing
 #           docs/figures/crawling_convergence_long.{csv,png} and the generated table
 #           (crawling-convergence --long) of docs/verification/crawling.md.
+#   --split: the graded run to 30 us with the cell and the substrate resolved on their
+#           own (the cell at 17 cells across on blocks of 40 to 68 cells, at 29 on 40 and
+#           68; the matched pairs shared with --long; about 35 minutes), writing
+#           docs/figures/crawling_convergence_split.{csv,png} and the generated table
+#           (crawling-convergence --split) of docs/verification/crawling.md.
 # RKPM_THREADS sets the thread count (default 2); RKPM_BIN names a built rkpm.
 set -euo pipefail
 script_name="study crawling-convergence"
@@ -28,7 +33,8 @@ for arg in "$@"; do
   case "$arg" in
     --coarse) options+=(--coarse); full=0 ;;
     --long) options+=(--long); stem=crawling_convergence_long; key="scripts/study crawling-convergence --long -->" ;;
-    *) rkpm_die "unknown argument $arg (expected --coarse or --long)" ;;
+    --split) options+=(--split); stem=crawling_convergence_split; key="scripts/study crawling-convergence --split -->" ;;
+    *) rkpm_die "unknown argument $arg (expected --coarse, --long or --split)" ;;
   esac
 done
 rkpm_python_study crawling_convergence.py "$out" "$stem" verification/crawling.md "$key" "$full" "${options[@]}"
