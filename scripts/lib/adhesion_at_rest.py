@@ -85,11 +85,11 @@ class AdhesionScene:
             edge = T.md_zero_pressure_radius(md, self.R, law.sigma0, self.E_star)
         return sphere, edge
 
-    def law_edge(self, profile):
-        """The edge of the compressive zone [m] by the self-consistent solution with the
-        contact law's own traction (`derjaguin_contact`), for the paraboloid the theories
-        assume or the sphere's own profile."""
-        return _law_edge(self.R, self.E_star, self.law_parameters, profile)
+    def law_solution(self, profile):
+        """(edge of the compressive zone, approach) [m] by the self-consistent solution with
+        the contact law's own traction (`derjaguin_contact`), for the paraboloid the
+        theories assume or the sphere's own profile."""
+        return _law_solution(self.R, self.E_star, self.law_parameters, profile)
 
     def measure(self, run_dir):
         """The run's compressive-zone edge [m], the normal force inside it [N], and the
@@ -112,9 +112,10 @@ class AdhesionScene:
 
 
 @functools.lru_cache(maxsize=None)
-def _law_edge(R, E_star, law_parameters, profile):
+def _law_solution(R, E_star, law_parameters, profile):
     epsilon, s0, beta, cutoff = law_parameters
-    return derjaguin_contact.adhered_sphere(R, E_star, epsilon, s0, beta, cutoff, profile=profile).compressive_radius
+    state = derjaguin_contact.adhered_sphere(R, E_star, epsilon, s0, beta, cutoff, profile=profile)
+    return state.compressive_radius, state.delta
 
 
 def compare(scene_path, run_dir):
@@ -133,8 +134,8 @@ def compare(scene_path, run_dir):
         "contact_radius_theory": {"JKR": sphere.a_jkr, "DMT": sphere.a_dmt, "MD": sphere.a_md}[sphere.regime],
         "core_z": core_z, "approach_sim": scene.resting_centre() - core_z, "approach_theory": delta_theory,
         "compressive_force": force,
-        "a_law_paraboloid": scene.law_edge("paraboloid"), "a_law_sphere": scene.law_edge("sphere"),
-        "rel_error_law": edge / scene.law_edge("sphere") - 1.0,
+        "a_law_paraboloid": scene.law_solution("paraboloid")[0], "a_law_sphere": scene.law_solution("sphere")[0],
+        "rel_error_law": edge / scene.law_solution("sphere")[0] - 1.0, "approach_law": scene.law_solution("sphere")[1],
     }
 
 

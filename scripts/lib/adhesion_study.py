@@ -43,7 +43,7 @@ COARSE_CELLS = (16, 22)
 CSV_COLUMNS = ["case", "particles", "tabor", "theory", "a_sim", "a_theory", "rel_error", "wall_s",
                "sphere_cells", "spacing_m", "maugis_lambda", "contact_radius_theory",
                "extra_approach_sim", "extra_approach_theory", "extra_approach_rel_error", "steps", "converged", "contact_radius_report",
-               "a_law_paraboloid", "a_law_sphere", "rel_error_law"]
+               "a_law_paraboloid", "a_law_sphere", "rel_error_law", "extra_approach_law"]
 
 
 def variant(cells, factor, size_factor):
@@ -90,10 +90,11 @@ def study_row(case, cells, folder, reference=None):
     (measured and by the theory; nan without one)."""
     c = A.compare(folder + ".toml", folder)
     if reference is None:
-        approach = approach_theory = math.nan
+        approach = approach_theory = approach_law = math.nan
     else:
         approach = reference["core_z"] - c["core_z"]
         approach_theory = c["approach_theory"] - reference["approach_theory"]
+        approach_law = c["approach_law"] - reference["approach_law"]
     wall = study_wall_seconds(folder)
     return {
         "case": case, "particles": c["particles"], "tabor": c["tabor"], "theory": c["theory"],
@@ -104,6 +105,7 @@ def study_row(case, cells, folder, reference=None):
         "compare": c,
         "steps": c["steps"], "converged": c["converged"], "contact_radius_report": reported_contact_radius(folder),
         "a_law_paraboloid": c["a_law_paraboloid"], "a_law_sphere": c["a_law_sphere"], "rel_error_law": c["rel_error_law"],
+        "extra_approach_law": approach_law,
     }
 
 
@@ -131,14 +133,15 @@ def table(rows, fitted, loads):
     um = 1e6
     lines = ["| case | sphere cells | particles | Tabor | theory | compressive zone [um] | theory [um] | error | "
              "law's own traction: paraboloid / sphere [um] | error against the sphere's | "
-             "further down than E30kPa [nm] | theory [nm] | steps | wall [s] |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "further down than E30kPa [nm] | MD [nm] | law's own traction, sphere [nm] | steps | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in (r for r in rows if r["case"] in CASES):
         lines.append(f"| {r['case']} | {r['sphere_cells']} | {r['particles']:,} | {r['tabor']:.3f} | {r['theory']} | "
                      f"{r['a_sim'] * um:.4f} | {r['a_theory'] * um:.4f} | {100 * r['rel_error']:+.2f} % | "
                      f"{r['a_law_paraboloid'] * um:.4f} / {r['a_law_sphere'] * um:.4f} | "
                      f"{100 * r['rel_error_law']:+.2f} % | "
-                     f"{nm(r['extra_approach_sim'])} | {nm(r['extra_approach_theory'])} | {r['steps']} | "
+                     f"{nm(r['extra_approach_sim'])} | {nm(r['extra_approach_theory'])} | "
+                     f"{nm(r['extra_approach_law'])} | {r['steps']} | "
                      f"{r['wall_s']:.1f} |")
     lines.append("")
     for case, f in fitted.items():

@@ -177,6 +177,8 @@ class AdheredSphereSolver:
         the two rings' mid-radii."""
         if pressure[0] <= 0.0:
             return 0.0
+        if not np.any(pressure <= 0.0):
+            raise ArithmeticError(f"the surfaces press out to the last ring ({self.r[-1]:.4g} m): no edge within it")
         i = int(np.argmax(pressure <= 0.0))
         return float(self.r[i - 1] + (self.r[i] - self.r[i - 1]) * pressure[i - 1] / (pressure[i - 1] - pressure[i]))
 
