@@ -19,9 +19,15 @@ independently (SPLIT_RUNS): the cell at 17 cells across on blocks from the shipp
 the cell's start moved along y by a quarter, a half and three quarters of the block's
 spacing: which body's resolution, which ratio of the two clouds' spacings and which
 registry of the two lattices moves the crawl. The runs that match the
-ladder's pairs are the --long runs (their folders are shared)."""
+ladder's pairs are the --long runs (their folders are shared).
+
+With --registry, the ladder to LONG_T_END with the cell's start at REGISTRY_SHIFTS of the
+block's spacing along y at every resolution: the velocity averaged over the two lattices'
+registry, with the standard error of that mean (--cells limits the resolutions). The
+unshifted runs are the --long runs, the 17-cell shifted ones --split's."""
 import csv
 import json
+import math
 import os
 import sys
 
@@ -37,6 +43,7 @@ FULL_CELLS = (17, 21, 25, 29)
 COARSE_CELLS = (17, 21)
 SHIPPED_CELLS = 17
 LONG_T_END = 30e-6
+REGISTRY_SHIFTS = (0.0, 0.25, 0.5, 0.75)
 # (cells across the cell, the block's cells along x and y (its cells along z follow), the
 # cell's start moved along y by this fraction of the block's spacing)
 SPLIT_RUNS = ((17, 40, 0.0), (17, 44, 0.0), (17, 48, 0.0), (17, 52, 0.0), (17, 56, 0.0), (17, 60, 0.0), (17, 64, 0.0),
@@ -256,6 +263,100 @@ def run_split(args):
     return 0
 
 
+def registry_folder(cells, shift):
+    """The run folder's name of the graded run to LONG_T_END at `cells` with the cell's
+    start moved by `shift` block spacings (shared by --long, --split and --registry)."""
+    return f"graded_c{cells}" + (f"_y{shift:g}" if shift else "") + f"_t{LONG_T_END * 1e6:g}us"
+
+
+def registry_means(rows):
+    """Per resolution: (cells, particles, mean velocity, its standard error, the wall time
+    of all its runs) over the registries run."""
+    out = []
+    for cells in sorted({r["cells"] for r in rows}):
+        mine = [r for r in rows if r["cells"] == cells]
+        v = np.array([r["velocity_m_per_s"] for r in mine])
+        error = v.std(ddof=1) / math.sqrt(len(v)) if len(v) > 1 else math.nan
+        out.append((cells, mine[0]["particles"], float(v.mean()), float(error), sum(r["wall_s"] for r in mine)))
+    return out
+
+
+def registry_table(rows, shifts, loads):
+    """The generated Markdown of --registry."""
+    lines = ["| cells | substrate cells | particles | start moved along y [substrate spacings] | "
+             "velocity, last quarter [nm/us] | quarter before [nm/us] | drift along y [nm] | wall [s] |",
+             "|---|---|---|---|---|---|---|---|"]
+    for shift, r in zip(shifts, rows):
+        lines.append(f"| {r['cells']} | {r['substrate_cells']} | {r['particles']:,} | {shift:g} | "
+                     f"{r['velocity_m_per_s'] * 1e3:.3f} | {r['velocity_earlier_m_per_s'] * 1e3:.3f} | "
+                     f"{r['drift_m'] * 1e9:.2f} | {r['wall_s']:.0f} |")
+    means = registry_means(rows)
+    lines.append("")
+    for cells, particles, mean, error, wall in means:
+        lines.append(f"- {cells} cells ({particles:,} particles): velocity over the registries {mean * 1e3:.3f} "
+                     f"+- {error * 1e3:.3f} nm/us (standard error of the mean), {wall:.0f} s of runs")
+    if len(means) >= 2:
+        (_, _, a, ea, _), (_, _, b, eb, _) = means[-2], means[-1]
+        d = abs(b - a) / abs(b)
+        lines.append(f"- two finest means: {a * 1e3:.3f} and {b * 1e3:.3f} nm/us, {100 * d:.1f} % apart, "
+                     f"their standard errors {100 * ea / abs(a):.0f} % and {100 * eb / abs(b):.0f} % "
+                     f"(criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}")
+    if len(means) >= 3:
+        e = richardson([10e-6 / m[0] for m in means], [m[2] for m in means])
+        if e.monotone:
+            lines.append(f"- Richardson estimate of the mean velocity: {e.q_inf * 1e3:.3f} +- {e.gci * 1e3:.3f} nm/us, "
+                         f"observed order {e.order:.2f}")
+        else:
+            lines.append(f"- the three finest means do not converge monotonically (spread x 1.25: "
+                         f"{e.gci * 1e3:.3f} nm/us); no Richardson estimate")
+    lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
+    return "\n".join(lines) + "\n"
+
+
+def registry_plot(rows, path):
+    """Each registry's velocity and their mean with its standard error against the
+    cell's spacing (left), and the mean's standard error against the wall time of a
+    resolution's runs (right)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    axes[0].plot([10.0 / r["cells"] for r in rows], [r["velocity_m_per_s"] * 1e3 for r in rows], "o", mfc="none",
+                 color="grey", label="one registry")
+    means = registry_means(rows)
+    axes[0].errorbar([10.0 / m[0] for m in means], [m[2] * 1e3 for m in means], yerr=[m[3] * 1e3 for m in means],
+                     fmt="s-", capsize=4, label="mean over the registries +- standard error")
+    axes[0].set_xlabel("the cell's particle spacing [um]")
+    axes[0].set_ylabel(f"drift velocity, last quarter of {LONG_T_END * 1e6:g} us [nm/us]")
+    axes[0].legend(fontsize=8)
+    axes[0].grid(True, alpha=0.3)
+    axes[1].loglog([m[4] for m in means], [m[3] / m[2] for m in means], "s-")
+    for cells, _, mean, error, wall in means:
+        axes[1].annotate(f"{cells} cells", (wall, error / mean), fontsize=8)
+    axes[1].set_xlabel("wall time of a resolution's runs [s], 2 threads")
+    axes[1].set_ylabel("standard error of the mean / mean")
+    axes[1].grid(True, which="both", alpha=0.3)
+    fig.suptitle("Crawling velocity averaged over the two lattices' registry")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def run_registry(args):
+    rows, shifts, loads = [], [], []
+    for cells in args.cells or FULL_CELLS:
+        for shift in REGISTRY_SHIFTS:
+            scene = variant(cells, RUNS["graded"], LONG_T_END, shift=shift)
+            folder = run_scene(args.rkpm, scene, os.path.join(args.out, registry_folder(cells, shift)), args.threads)
+            rows.append(measure("graded", cells, folder, scene))
+            shifts.append(shift)
+            loads.append(study_load(folder))
+            print(f"cell {cells}, start moved {shift:g}: velocity {rows[-1]['velocity_m_per_s'] * 1e3:.3f} nm/us, "
+                  f"{rows[-1]['wall_s']:.0f} s", flush=True)
+    write_results(args.out, "crawling_convergence_registry", rows, CSV_COLUMNS, registry_table(rows, shifts, loads),
+                  lambda path: registry_plot(rows, path))
+    return 0
+
+
 def main(argv=None):
     parser = study_parser("crawling drift at several resolutions")
     parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
@@ -263,9 +364,15 @@ def main(argv=None):
                         help=f"the graded runs only, to {LONG_T_END * 1e6:g} us (results: crawling_convergence_long)")
     parser.add_argument("--split", action="store_true",
                         help="the graded run to the long end with the cell or the substrate refined alone")
+    parser.add_argument("--registry", action="store_true",
+                        help="the graded runs to the long end with the cell's start at four places on the block's "
+                             "lattice at every resolution")
+    parser.add_argument("--cells", type=int, nargs="+", help=f"resolutions of --registry (default {FULL_CELLS})")
     args = parser.parse_args(argv)
     if args.split:
         return run_split(args)
+    if args.registry:
+        return run_registry(args)
     rows, loads = [], []
     runs = {"graded": RUNS["graded"]} if args.long else RUNS
     t_end, suffix = (LONG_T_END, f"_t{LONG_T_END * 1e6:g}us") if args.long else (None, "")

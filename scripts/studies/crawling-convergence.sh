@@ -9,7 +9,14 @@
 #   the generated table (crawling-convergence) of docs/verification/crawling.md
 # The runs go to out/crawling-convergence/ (a run folder holding a summary.json is kept:
 # delete it to rerun). About 50 minutes on 2 cores.
-# Usage: scripts/study crawling-convergence [--coarse] [--long | --split]
+#   --registry [--cells N ...]: the graded runs to 30 us with the cell's start at 0, 1/4,
+#           1/2 and 3/4 of the block's spacing along y at every resolution (or those
+#           named), the velocity averaged over the registry with its standard error
+#           (about 100 minutes for the four; the runs shared with --long and --split),
+#           writing docs/figures/crawling_convergence_registry.{csv,png} and the
+#           generated table (crawling-convergence --registry) of
+#           docs/verification/crawling.md.
+# Usage: scripts/study crawling-convergence [--coarse] [--long | --split | --registry [--cells N ...]]
 #   --coarse: 17 and 21 cells only (about 8 minutes); docs untouched.
 #   --long: the graded runs alone, to 30 us instead of 12 (about 30 minutes), writing
 #           docs/figures/crawling_convergence_long.{csv,png} and the generated table
@@ -34,7 +41,9 @@ for arg in "$@"; do
     --coarse) options+=(--coarse); full=0 ;;
     --long) options+=(--long); stem=crawling_convergence_long; key="scripts/study crawling-convergence --long -->" ;;
     --split) options+=(--split); stem=crawling_convergence_split; key="scripts/study crawling-convergence --split -->" ;;
-    *) rkpm_die "unknown argument $arg (expected --coarse, --long or --split)" ;;
+    --registry) options+=(--registry); stem=crawling_convergence_registry; key="scripts/study crawling-convergence --registry -->" ;;
+    --cells|[0-9]*) options+=("$arg") ;;
+    *) rkpm_die "unknown argument $arg (expected --coarse, --long, --split, --registry or --cells N ...)" ;;
   esac
 done
 rkpm_python_study crawling_convergence.py "$out" "$stem" verification/crawling.md "$key" "$full" "${options[@]}"
