@@ -107,6 +107,16 @@ def estimates(rows):
     return {key: richardson(h, [r[key] for r in graded]) for key in ("drift_m", "velocity_m_per_s")}
 
 
+def richardson_line(name, e, scale, unit, error_bar=""):
+    """A table's bullet for the Richardson estimate `e` of `name`, in `unit` (its SI value
+    times `scale`), or why there is none."""
+    if e.monotone:
+        return (f"- Richardson estimate of {name}: {e.q_inf * scale:.3f} +- {e.gci * scale:.3f} {unit}{error_bar}, "
+                f"observed order {e.order:.2f}")
+    return (f"- {name}: the three finest do not converge monotonically (spread x 1.25: {e.gci * scale:.3f} {unit}); "
+            f"no Richardson estimate")
+
+
 def table(rows, est, loads):
     lines = ["| cells | substrate cells | particles | run | drift along y [nm] | velocity, last quarter [nm/us] | "
              "quarter before [nm/us] | drift along x [nm] | steps | wall [s] |",
@@ -133,13 +143,8 @@ def table(rows, est, loads):
                          f"{'met' if d <= 0.1 else 'not met'}")
     for key, e in est.items():
         scale, unit = (1e9, "nm") if key == "drift_m" else (1e3, "nm/us")
-        if e.monotone:
-            lines.append(f"- Richardson estimate of the graded {key.split('_')[0]}: {e.q_inf * scale:.3f} "
-                         f"+- {e.gci * scale:.3f} {unit} (finest run's grid convergence index), observed order "
-                         f"{e.order:.2f}")
-        else:
-            lines.append(f"- graded {key.split('_')[0]}: the three finest do not converge monotonically "
-                         f"(spread x 1.25: {e.gci * scale:.3f} {unit}); no Richardson estimate")
+        lines.append(richardson_line(f"the graded {key.split('_')[0]}", e, scale, unit,
+                                     " (finest run's grid convergence index)"))
     lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
     return "\n".join(lines) + "\n"
 
@@ -303,12 +308,7 @@ def registry_table(rows, shifts, loads):
                      f"(criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}")
     if len(means) >= 3:
         e = richardson([10e-6 / m[0] for m in means], [m[2] for m in means])
-        if e.monotone:
-            lines.append(f"- Richardson estimate of the mean velocity: {e.q_inf * 1e3:.3f} +- {e.gci * 1e3:.3f} nm/us, "
-                         f"observed order {e.order:.2f}")
-        else:
-            lines.append(f"- the three finest means do not converge monotonically (spread x 1.25: "
-                         f"{e.gci * 1e3:.3f} nm/us); no Richardson estimate")
+        lines.append(richardson_line("the mean velocity", e, 1e3, "nm/us"))
     lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
     return "\n".join(lines) + "\n"
 
