@@ -250,28 +250,27 @@ def split_plot(rows, scenes, path):
     fig.savefig(path, dpi=110)
 
 
+def run_long_graded(args, cells, block_cells=None, shift=0.0):
+    """The graded run to LONG_T_END at `cells`, on the matched block or one of
+    `block_cells`, the cell's start moved by `shift` block spacings (`variant`), in a
+    folder named by what differs from the ladder (shared by --long, --split and
+    --registry); returns its row, its scene and the load after it."""
+    scene = variant(cells, RUNS["graded"], LONG_T_END, block_cells, shift)
+    matched = scene["body"][1]["cloud"]["cells"] == variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]
+    name = (f"graded_c{cells}" + ("" if matched else f"_b{block_cells}") + (f"_y{shift:g}" if shift else "")
+            + f"_t{LONG_T_END * 1e6:g}us")
+    folder = run_scene(args.rkpm, scene, os.path.join(args.out, name), args.threads)
+    row = measure("graded", cells, folder, scene)
+    print(f"cell {cells}, substrate {row['substrate_cells']}, start moved {shift:g}: velocity "
+          f"{row['velocity_m_per_s'] * 1e3:.3f} nm/us, {row['wall_s']:.0f} s", flush=True)
+    return row, scene, study_load(folder)
+
+
 def run_split(args):
-    rows, scenes, loads = [], [], []
-    suffix = f"_t{LONG_T_END * 1e6:g}us"
-    for cells, block_cells, shift in SPLIT_RUNS:
-        scene = variant(cells, RUNS["graded"], LONG_T_END, block_cells, shift)
-        matched = scene["body"][1]["cloud"]["cells"] == variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]
-        name = f"graded_c{cells}" + ("" if matched else f"_b{block_cells}") + (f"_y{shift:g}" if shift else "") + suffix
-        folder = run_scene(args.rkpm, scene, os.path.join(args.out, name), args.threads)
-        rows.append(measure("graded", cells, folder, scene))
-        scenes.append(scene)
-        loads.append(study_load(folder))
-        print(f"cell {cells}, substrate {rows[-1]['substrate_cells']}: velocity "
-              f"{rows[-1]['velocity_m_per_s'] * 1e3:.3f} nm/us, {rows[-1]['wall_s']:.0f} s", flush=True)
+    rows, scenes, loads = zip(*(run_long_graded(args, *run) for run in SPLIT_RUNS))
     write_results(args.out, "crawling_convergence_split", rows, CSV_COLUMNS, split_table(rows, scenes, loads),
                   lambda path: split_plot(rows, scenes, path))
     return 0
-
-
-def registry_folder(cells, shift):
-    """The run folder's name of the graded run to LONG_T_END at `cells` with the cell's
-    start moved by `shift` block spacings (shared by --long, --split and --registry)."""
-    return f"graded_c{cells}" + (f"_y{shift:g}" if shift else "") + f"_t{LONG_T_END * 1e6:g}us"
 
 
 def registry_means(rows):
@@ -342,16 +341,9 @@ def registry_plot(rows, path):
 
 
 def run_registry(args):
-    rows, shifts, loads = [], [], []
-    for cells in args.cells or FULL_CELLS:
-        for shift in REGISTRY_SHIFTS:
-            scene = variant(cells, RUNS["graded"], LONG_T_END, shift=shift)
-            folder = run_scene(args.rkpm, scene, os.path.join(args.out, registry_folder(cells, shift)), args.threads)
-            rows.append(measure("graded", cells, folder, scene))
-            shifts.append(shift)
-            loads.append(study_load(folder))
-            print(f"cell {cells}, start moved {shift:g}: velocity {rows[-1]['velocity_m_per_s'] * 1e3:.3f} nm/us, "
-                  f"{rows[-1]['wall_s']:.0f} s", flush=True)
+    runs = [(cells, shift) for cells in args.cells or FULL_CELLS for shift in REGISTRY_SHIFTS]
+    rows, _, loads = zip(*(run_long_graded(args, cells, shift=shift) for cells, shift in runs))
+    shifts = [shift for _, shift in runs]
     write_results(args.out, "crawling_convergence_registry", rows, CSV_COLUMNS, registry_table(rows, shifts, loads),
                   lambda path: registry_plot(rows, path))
     return 0
