@@ -24,7 +24,15 @@ ladder's pairs are the --long runs (their folders are shared).
 With --registry, the ladder to LONG_T_END with the cell's start at REGISTRY_SHIFTS of the
 block's spacing along y at every resolution: the velocity averaged over the two lattices'
 registry, with the standard error of that mean (--cells limits the resolutions). The
-unshifted runs are the --long runs, the 17-cell shifted ones --split's."""
+unshifted runs are the --long runs, the 17-cell shifted ones --split's.
+
+With --fine, what sets the crawl's velocity and its resolution dependence (FINE_RUNS):
+the ladder on a block 0.5 s0 apart along x and y (100 x 100 cells, its cells along z
+refined with the cell), its coarsest with the cell's start moved by half that spacing,
+the two finest on a block also 0.5 s0 apart along z, and the cell at 17 and 29 cells on
+blocks of 4 to 7 cells along z (the --split runs). Each row gets the contact energy at the
+end and the velocity of an overdamped cell under the force that energy implies
+(`overdamped_velocity`)."""
 import csv
 import json
 import math
@@ -34,6 +42,7 @@ import sys
 import numpy as np
 
 from convergence_fit import richardson
+from layered_contact import adhesion_ratio
 from study_runs import study_parser, write_results, load_scene, run_scene, study_load, study_wall_seconds
 
 SCENE = "examples/crawling/crawling.toml"
@@ -52,11 +61,11 @@ CSV_COLUMNS = ["run", "cells", "particles", "drift_m", "velocity_m_per_s", "wall
                "velocity_earlier_m_per_s", "drift_x_m", "t_end_s", "steps", "energy_error"]
 
 
-def variant(cells, grading, t_end=None, block_cells=None, shift=0.0):
+def variant(cells, grading, t_end=None, block_cells=None, shift=0.0, substrate=None):
     """The scene at `cells` across the cell, the block refined with it (or with
-    `block_cells` along x and y, its cells along z in the shipped proportion), the cell's
-    start moved along y by `shift` block spacings, and `grading` (run to `t_end` when
-    given, else the shipped 12 us)."""
+    `block_cells` along x and y, its cells along z in the shipped proportion, or with the
+    cells `substrate` = [x, y, z]), the cell's start moved along y by `shift` block
+    spacings, and `grading` (run to `t_end` when given, else the shipped 12 us)."""
     scene = load_scene(SCENE)
     if t_end is not None:
         scene["integrator"]["t_end"] = t_end
@@ -65,10 +74,30 @@ def variant(cells, grading, t_end=None, block_cells=None, shift=0.0):
     cell["cloud"]["cells"] = cells
     scale = cells / SHIPPED_CELLS if block_cells is None else block_cells / shipped[0]
     block["cloud"]["cells"] = [round(n * scale) for n in shipped]
+    if substrate is not None:
+        block["cloud"]["cells"] = list(substrate)
     cell["cloud"]["center"][1] += shift * block["cloud"]["size"][1] / block["cloud"]["cells"][1]
     block["material"]["grade_a"], block["material"]["grade_b"] = grading
     scene["scene"]["name"] = f"crawling_c{cells}"
     return scene
+
+
+# --fine: (cells across the cell, the block's cells [x, y, z], the cell's start moved along
+# y by this fraction of the block's spacing, the group the row belongs to)
+# The contact term's default cutoff in s0 (docs/theory/contact.md); the crawling scene keeps it.
+CUTOFF_IN_S0 = 3.0
+# At zero load JKR's contact radius grows as w^(1/3), so the contact energy, w times the
+# patch's area, as w^(5/3): the exponent that maps the layered bodies' adhesion energy
+# error onto the contact energy and the velocity.
+CONTACT_ENERGY_EXPONENT = 5.0 / 3.0
+FINE_RUNS = ((17, (100, 100, 4), 0.0, "fine x, y"), (21, (100, 100, 5), 0.0, "fine x, y"),
+             (25, (100, 100, 6), 0.0, "fine x, y"), (29, (100, 100, 7), 0.0, "fine x, y"),
+             (17, (100, 100, 4), 0.5, "registry"),
+             (25, (100, 100, 12), 0.0, "fine x, y, z"), (29, (100, 100, 12), 0.0, "fine x, y, z"),
+             (17, (40, 40, 4), 0.0, "split"), (17, (48, 48, 5), 0.0, "split"), (17, (56, 56, 6), 0.0, "split"),
+             (17, (68, 68, 7), 0.0, "split"), (29, (40, 40, 4), 0.0, "split"), (29, (68, 68, 7), 0.0, "split")) + tuple(
+    (cells, tuple(variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]), shift, "matched")
+    for cells in FULL_CELLS for shift in REGISTRY_SHIFTS)
 
 
 def history(folder):
@@ -250,17 +279,23 @@ def split_plot(rows, scenes, path):
     fig.savefig(path, dpi=110)
 
 
-def run_long_graded(args, cells, block_cells=None, shift=0.0):
-    """The graded run to LONG_T_END at `cells`, on the matched block or one of
-    `block_cells`, the cell's start moved by `shift` block spacings (`variant`), in a
-    folder named by what differs from the ladder (shared by --long, --split and
-    --registry); returns its row, its scene and the load after it."""
-    scene = variant(cells, RUNS["graded"], LONG_T_END, block_cells, shift)
-    matched = scene["body"][1]["cloud"]["cells"] == variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]
-    name = (f"graded_c{cells}" + ("" if matched else f"_b{block_cells}") + (f"_y{shift:g}" if shift else "")
-            + f"_t{LONG_T_END * 1e6:g}us")
+def run_long_graded(args, cells, block_cells=None, shift=0.0, substrate=None):
+    """The graded run to LONG_T_END at `cells`, on the matched block or another
+    (`block_cells` or `substrate`), the cell's start moved by `shift` block spacings
+    (`variant`), in a folder named by what differs from the ladder (shared by --long,
+    --split, --registry and --fine); returns its row (with its folder), its scene and the
+    load after it."""
+    scene = variant(cells, RUNS["graded"], LONG_T_END, block_cells, shift, substrate)
+    block = scene["body"][1]["cloud"]["cells"]
+    if block == variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]:
+        substrate = ""
+    elif block == variant(cells, RUNS["graded"], block_cells=block[0])["body"][1]["cloud"]["cells"]:
+        substrate = f"_b{block[0]}"
+    else:
+        substrate = "_b" + "x".join(map(str, block))
+    name = f"graded_c{cells}{substrate}" + (f"_y{shift:g}" if shift else "") + f"_t{LONG_T_END * 1e6:g}us"
     folder = run_scene(args.rkpm, scene, os.path.join(args.out, name), args.threads)
-    row = measure("graded", cells, folder, scene)
+    row = dict(measure("graded", cells, folder, scene), folder=folder)
     print(f"cell {cells}, substrate {row['substrate_cells']}, start moved {shift:g}: velocity "
           f"{row['velocity_m_per_s'] * 1e3:.3f} nm/us, {row['wall_s']:.0f} s", flush=True)
     return row, scene, study_load(folder)
@@ -349,6 +384,182 @@ def run_registry(args):
     return 0
 
 
+def drift_at(folder, t):
+    """The centroid's drift along y at time t [s], interpolated in the run's history."""
+    h = history(folder)
+    return float(np.interp(t, h["time"], h["centroid_y"] - h["centroid_y"][0]))
+
+
+def overdamped_velocity(folder, scene):
+    """The contact term's energy E at the end of a graded run, and the velocity of an
+    overdamped cell under the force that energy implies. With the linear stiffness law
+    every pair's eps follows the substrate's modulus, so a rigid shift dy of the cell
+    changes E by E (d ln mu / dy) dy, with mu's factor grade_a (y - y_min) / L0 + grade_b
+    (Eq. 18) taken at the block's middle, where the cell sits; the damping c resists the
+    cell's mass m with c m v. Returns (E [J], v [m/s])."""
+    summary = json.load(open(os.path.join(folder, "summary.json")))
+    energy = summary["contact cell substrate"]["energy"]
+    cell, block = scene["body"]
+    a, b = block["material"]["grade_a"], block["material"]["grade_b"]
+    length = block["cloud"]["size"][1]
+    log_gradient = (a / length) / (0.5 * a + b)
+    mass = cell["density"] * 4.0 / 3.0 * math.pi * cell["cloud"]["radius"] ** 3
+    return energy, -energy * log_gradient / (scene["integrator"]["damping"] * mass)
+
+
+def layered_ratio(scene):
+    """The adhesion energy of flat bodies with the scene's layer spacings (the cell's
+    2 R / cells at its pole, the block's along z) over the continuum's
+    (layered_contact.adhesion_ratio)."""
+    cell, block = scene["body"]
+    term = scene["term"][0]
+    s0 = term["s0"]
+    return adhesion_ratio(2.0 * cell["cloud"]["radius"] / cell["cloud"]["cells"],
+                          block["cloud"]["size"][2] / block["cloud"]["cells"][2], term["epsilon"], s0,
+                          math.sqrt(term["beta"][0] * term["beta"][1]), term.get("cutoff", CUTOFF_IN_S0 * s0))
+
+
+def fine_table(rows, loads):
+    """The generated Markdown of --fine: every run with its contact energy and the
+    overdamped velocity that energy implies, then the checks by group."""
+    size = load_scene(SCENE)["body"][1]["cloud"]["size"]
+    s0 = load_scene(SCENE)["term"][0]["s0"]
+    lines = ["| group | cells | substrate cells | substrate spacing x, y / z [s0] | particles | start moved "
+             "[substrate spacings] | velocity, last quarter [nm/us] | quarter before [nm/us] | contact energy [fJ] | "
+             "overdamped velocity from it [nm/us] | velocity / overdamped | layered w / continuum w | "
+             "velocity / (w ratio)^(5/3) [nm/us] | wall [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in (r for r in rows if r["group"] != "matched"):
+        n = [int(k) for k in r["substrate_cells"].split("x")]
+        lines.append(f"| {r['group']} | {r['cells']} | {r['substrate_cells']} | {size[0] / n[0] / s0:.2f} / "
+                     f"{size[2] / n[2] / s0:.2f} | {r['particles']:,} | {r['start_shift']:g} | "
+                     f"{r['velocity_m_per_s'] * 1e3:.3f} | {r['velocity_earlier_m_per_s'] * 1e3:.3f} | "
+                     f"{-r['contact_energy_J'] * 1e15:.2f} | {r['velocity_overdamped_m_per_s'] * 1e3:.3f} | "
+                     f"{r['velocity_m_per_s'] / r['velocity_overdamped_m_per_s']:.2f} | {r['layered_ratio']:.3f} | "
+                     f"{r['velocity_continuum_m_per_s'] * 1e3:.3f} | {r['wall_s']:.0f} |")
+    lines.append("")
+    group = {}
+    for r in rows:
+        group.setdefault(r["group"], []).append(r)
+    if "registry" in group:
+        moved = group["registry"][0]
+        same = next(r for r in group["fine x, y"] if r["cells"] == moved["cells"])
+        lines.append(f"- registry, {moved['cells']} cells on the {same['substrate_cells']} block: velocity "
+                     f"{same['velocity_m_per_s'] * 1e3:.3f} and {moved['velocity_m_per_s'] * 1e3:.3f} nm/us with the "
+                     f"start moved by 0 and {moved['start_shift']:g} of its spacing, "
+                     f"{100 * abs(moved['velocity_m_per_s'] / same['velocity_m_per_s'] - 1):.1f} % apart")
+    for name in ("fine x, y", "fine x, y, z"):
+        mine = group.get(name, [])
+        if len(mine) >= 2:
+            a, b = mine[-2], mine[-1]
+            d = abs(b["velocity_m_per_s"] - a["velocity_m_per_s"]) / abs(b["velocity_m_per_s"])
+            dc = abs(b["velocity_continuum_m_per_s"] / a["velocity_continuum_m_per_s"] - 1.0)
+            lines.append(f"- {name}, two finest ({a['cells']} and {b['cells']} cells): velocity "
+                         f"{a['velocity_m_per_s'] * 1e3:.3f} and {b['velocity_m_per_s'] * 1e3:.3f} nm/us, "
+                         f"{100 * d:.1f} % apart (criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}; "
+                         f"contact energy {-a['contact_energy_J'] * 1e15:.2f} and "
+                         f"{-b['contact_energy_J'] * 1e15:.2f} fJ; over (w ratio)^(5/3): "
+                         f"{a['velocity_continuum_m_per_s'] * 1e3:.3f} and {b['velocity_continuum_m_per_s'] * 1e3:.3f} "
+                         f"nm/us, {100 * dc:.1f} % apart")
+    means = []
+    for cells in sorted({r["cells"] for r in group.get("matched", [])}):
+        mine = [r for r in group["matched"] if r["cells"] == cells]
+        energy = np.array([-r["contact_energy_J"] for r in mine])
+        v = np.mean([r["velocity_m_per_s"] for r in mine])
+        v_over = np.mean([r["velocity_overdamped_m_per_s"] for r in mine])
+        scale = mine[0]["layered_ratio"] ** CONTACT_ENERGY_EXPONENT
+        means.append((cells, energy.mean(), v / v_over, v_over / energy.mean(), v / scale))
+        lines.append(f"- matched ladder, {cells} cells ({mine[0]['substrate_cells']} block), {len(mine)} starts: contact "
+                     f"energy {energy.mean() * 1e15:.2f} fJ (spread {100 * np.ptp(energy) / energy.mean():.1f} %), "
+                     f"overdamped velocity {v_over * 1e3:.3f} nm/us, mean velocity {v * 1e3:.3f} nm/us, ratio "
+                     f"{v / v_over:.2f}; layered w / continuum w {mine[0]['layered_ratio']:.3f}: contact energy over "
+                     f"(w ratio)^(5/3) {energy.mean() / scale * 1e15:.2f} fJ, mean velocity over it "
+                     f"{v / scale * 1e3:.3f} nm/us")
+    if len(means) >= 3:
+        finest = means[-3:]
+        e = richardson([10e-6 / m[0] for m in finest], [m[1] for m in finest])
+        lines.append(richardson_line("the matched ladder's contact energy (three finest, means of the starts)", e, 1e15,
+                                     "fJ"))
+        if e.monotone:
+            ratio, per_energy = np.mean([m[2] for m in finest]), finest[-1][3]
+            lines.append(f"- the velocity that energy implies at the three finest's mean ratio {ratio:.2f}: "
+                         f"{ratio * per_energy * e.q_inf * 1e3:.2f} +- {ratio * per_energy * e.gci * 1e3:.2f} nm/us")
+        corrected = [m[4] for m in finest]
+        d = abs(corrected[-1] / corrected[-2] - 1.0)
+        lines.append(f"- the matched ladder's mean velocity over (w ratio)^(5/3), three finest: "
+                     f"{', '.join(f'{v * 1e3:.3f}' for v in corrected)} nm/us; two finest {100 * d:.1f} % apart "
+                     f"(criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}")
+    once = {r["folder"]: r for r in rows}.values()
+    ratios = np.array([r["velocity_m_per_s"] / r["velocity_overdamped_m_per_s"] for r in once])
+    lines.append(f"- velocity / overdamped velocity over the {len(ratios)} runs: {ratios.min():.2f} to "
+                 f"{ratios.max():.2f}, median {np.median(ratios):.2f}")
+    lines.append(f"- machine load (1-minute average) after the runs: {', '.join(sorted(set(loads)))}")
+    return "\n".join(lines) + "\n"
+
+
+def fine_plot(rows, path):
+    """The velocity against the overdamped velocity from each run's own contact energy
+    (left), and the contact energy against the layered bodies' adhesion energy at the
+    run's spacings, to the power CONTACT_ENERGY_EXPONENT (right)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
+    markers = {"fine x, y": "s", "registry": "x", "fine x, y, z": "D", "split": "o", "matched": "."}
+    for name, marker in markers.items():
+        mine = [r for r in rows if r["group"] == name]
+        if not mine:
+            continue
+        axes[0].plot([r["velocity_overdamped_m_per_s"] * 1e3 for r in mine],
+                     [r["velocity_m_per_s"] * 1e3 for r in mine], marker, mfc="none", label=name)
+        for r in mine:
+            axes[0].annotate(str(r["cells"]), (r["velocity_overdamped_m_per_s"] * 1e3, r["velocity_m_per_s"] * 1e3),
+                             fontsize=7)
+    top = max(max(r["velocity_overdamped_m_per_s"], r["velocity_m_per_s"]) for r in rows) * 1.1e3
+    axes[0].plot([0, top], [0, top], color="grey", lw=0.8, label="velocity = overdamped velocity")
+    axes[0].set_xlabel("overdamped velocity from the run's contact energy [nm/us]")
+    axes[0].set_ylabel(f"drift velocity, last quarter of {LONG_T_END * 1e6:g} us [nm/us]")
+    axes[0].legend(fontsize=8)
+    axes[0].grid(True, alpha=0.3)
+    scaled = [r["layered_ratio"] ** CONTACT_ENERGY_EXPONENT for r in rows]
+    per_unit = float(np.median([-r["contact_energy_J"] / x for r, x in zip(rows, scaled)]))
+    for cells, color in ((17, "C0"), (21, "C1"), (25, "C2"), (29, "C3")):
+        for name, marker in markers.items():
+            mine = [(x, r) for x, r in zip(scaled, rows) if r["cells"] == cells and r["group"] == name]
+            if mine:
+                axes[1].plot([x for x, _ in mine], [-r["contact_energy_J"] * 1e15 for _, r in mine], marker,
+                             mfc="none", color=color, label=f"cell {cells} cells, {name}")
+    top = max(scaled) * 1.1
+    axes[1].plot([0, top], [0, per_unit * top * 1e15], color="grey", lw=0.8,
+                 label=f"proportional: {per_unit * 1e15:.2f} fJ at the continuum's w")
+    axes[1].set_xlabel("(layered w / continuum w)^(5/3) at the run's spacings")
+    axes[1].set_ylabel("contact energy at the end [fJ]")
+    axes[1].set_xlim(left=0)
+    axes[1].set_ylim(bottom=0)
+    axes[1].legend(fontsize=6, ncol=2)
+    axes[1].grid(True, alpha=0.3)
+    fig.suptitle("Crawling: the velocity follows the contact energy, which follows the layers' adhesion energy")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def run_fine(args):
+    rows, loads = [], []
+    for cells, substrate, shift, group in FINE_RUNS:
+        row, scene, load = run_long_graded(args, cells, shift=shift, substrate=substrate)
+        row["contact_energy_J"], row["velocity_overdamped_m_per_s"] = overdamped_velocity(row["folder"], scene)
+        row["start_shift"], row["group"] = shift, group
+        row["layered_ratio"] = layered_ratio(scene)
+        row["velocity_continuum_m_per_s"] = row["velocity_m_per_s"] / row["layered_ratio"] ** CONTACT_ENERGY_EXPONENT
+        rows.append(row)
+        loads.append(load)
+    write_results(args.out, "crawling_convergence_fine", rows,
+                  ["group"] + CSV_COLUMNS + ["start_shift", "contact_energy_J", "velocity_overdamped_m_per_s",
+                                             "layered_ratio", "velocity_continuum_m_per_s"],
+                  fine_table(rows, loads), lambda path: fine_plot(rows, path))
+    return 0
+
+
 def main(argv=None):
     parser = study_parser("crawling drift at several resolutions")
     parser.add_argument("--coarse", action="store_true", help=f"cells {COARSE_CELLS} only")
@@ -359,8 +570,13 @@ def main(argv=None):
     parser.add_argument("--registry", action="store_true",
                         help="the graded runs to the long end with the cell's start at four places on the block's "
                              "lattice at every resolution")
-    parser.add_argument("--cells", type=int, nargs="+", help=f"resolutions of --registry (default {FULL_CELLS})")
+    parser.add_argument("--cells", type=int, nargs="+",
+                        help=f"resolutions of --registry (default {FULL_CELLS})")
+    parser.add_argument("--fine", action="store_true",
+                        help="the graded runs to the long end on blocks 0.5 s0 apart, and what sets the velocity")
     args = parser.parse_args(argv)
+    if args.fine:
+        return run_fine(args)
     if args.split:
         return run_split(args)
     if args.registry:

@@ -16,7 +16,15 @@
 #           writing docs/figures/crawling_convergence_registry.{csv,png} and the
 #           generated table (crawling-convergence --registry) of
 #           docs/verification/crawling.md.
-# Usage: scripts/study crawling-convergence [--coarse] [--long | --split | --registry [--cells N ...]]
+#   --fine: what sets the velocity: the ladder on a block 0.5 s0 apart along x and y,
+#           its coarsest with the cell's start moved by half a spacing, the two finest
+#           on a block 0.5 s0 apart along z too, each run's contact energy with the
+#           overdamped velocity it implies and the layered bodies' adhesion energy at
+#           its spacings (scripts/lib/layered_contact.py); reuses the --split and
+#           --registry runs (about 75 minutes beyond them), writing
+#           docs/figures/crawling_convergence_fine.{csv,png} and the generated table
+#           (crawling-convergence --fine) of docs/verification/crawling.md.
+# Usage: scripts/study crawling-convergence [--coarse] [--long | --split | --registry [--cells N ...] | --fine]
 #   --coarse: 17 and 21 cells only (about 8 minutes); docs untouched.
 #   --long: the graded runs alone, to 30 us instead of 12 (about 30 minutes), writing
 #           docs/figures/crawling_convergence_long.{csv,png} and the generated table
@@ -42,8 +50,9 @@ for arg in "$@"; do
     --long) options+=(--long); stem=crawling_convergence_long; key="scripts/study crawling-convergence --long -->" ;;
     --split) options+=(--split); stem=crawling_convergence_split; key="scripts/study crawling-convergence --split -->" ;;
     --registry) options+=(--registry); stem=crawling_convergence_registry; key="scripts/study crawling-convergence --registry -->" ;;
+    --fine) options+=(--fine); stem=crawling_convergence_fine; key="scripts/study crawling-convergence --fine -->" ;;
     --cells|[0-9]*) options+=("$arg") ;;
-    *) rkpm_die "unknown argument $arg (expected --coarse, --long, --split, --registry or --cells N ...)" ;;
+    *) rkpm_die "unknown argument $arg (expected --coarse, --long, --split, --registry, --fine or --cells N ...)" ;;
   esac
 done
 rkpm_python_study crawling_convergence.py "$out" "$stem" verification/crawling.md "$key" "$full" "${options[@]}"
