@@ -25,6 +25,7 @@ import numpy as np
 import contact_theory as T
 import contact_traction
 import derjaguin_contact
+import layered_contact
 from rbc_midsurface import last_frame, read_vtu
 
 
@@ -70,6 +71,9 @@ class AdhesionScene:
         self.law = T.contact_term_law(contact["epsilon"], contact["s0"], contact["beta"], contact.get("cutoff"))
         self.law_parameters = (contact["epsilon"], contact["s0"], tuple(contact["beta"]), contact.get("cutoff"))
         self.s0 = contact["s0"]
+        # The layers the contact term's pair sum sees: the sphere's at its pole, the
+        # block's along z (layered_contact).
+        self.layer_spacings = (self.spacing, block["cloud"]["size"][2] / block["cloud"]["cells"][2])
 
     def theory(self):
         """The three theories at zero load (`contact_theory.adhered_sphere`), and the edge
@@ -90,6 +94,13 @@ class AdhesionScene:
         the contact law's own traction (`derjaguin_contact`), for the paraboloid the
         theories assume or the sphere's own profile."""
         return _law_solution(self.R, self.E_star, self.law_parameters, profile)
+
+    def layered_solution(self):
+        """(edge of the compressive zone [m], approach [m]) by the self-consistent solution
+        with the traction the runs' particle layers carry (`layered_contact.LayeredTraction`)
+        instead of the continuum's, for the sphere's own profile; NaN where Newton's method
+        finds none."""
+        return _layered_solution(self.R, self.E_star, self.law_parameters, self.layer_spacings)
 
     def measure(self, run_dir):
         """The run's compressive-zone edge [m], the normal force inside it [N], and the
@@ -118,6 +129,18 @@ def _law_solution(R, E_star, law_parameters, profile):
     return state.compressive_radius, state.delta
 
 
+@functools.lru_cache(maxsize=None)
+def _layered_solution(R, E_star, law_parameters, layer_spacings):
+    epsilon, s0, beta, cutoff = law_parameters
+    law = layered_contact.LayeredTraction(*layer_spacings, epsilon, s0, math.sqrt(beta[0] * beta[1]),
+                                          T.cutoff_or_default(cutoff, s0))
+    try:
+        state = derjaguin_contact.AdheredSphereSolver(R, E_star, law, law.z0, profile="sphere").at_load(0.0)
+    except ArithmeticError:
+        return math.nan, math.nan
+    return state.compressive_radius, state.delta
+
+
 def compare(scene_path, run_dir):
     """One run against the theory: a dict of the measures, the theory and the errors."""
     scene = AdhesionScene(scene_path)
@@ -136,6 +159,7 @@ def compare(scene_path, run_dir):
         "compressive_force": force,
         "a_law_paraboloid": scene.law_solution("paraboloid")[0], "a_law_sphere": scene.law_solution("sphere")[0],
         "rel_error_law": edge / scene.law_solution("sphere")[0] - 1.0, "approach_law": scene.law_solution("sphere")[1],
+        "a_layered": scene.layered_solution()[0], "rel_error_layered": edge / scene.layered_solution()[0] - 1.0,
     }
 
 

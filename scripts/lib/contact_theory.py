@@ -196,6 +196,11 @@ def half_space_law(phi, cutoff, rho1, rho2, length):
     return HalfSpaceLaw(w=w, sigma0=sigma0, z0=z0, peak_gap=peak)
 
 
+def cutoff_or_default(cutoff, s0):
+    """The contact term's cutoff [m]: the scene's, or its default 3 s0 (docs/theory/contact.md)."""
+    return 3.0 * s0 if cutoff is None else cutoff
+
+
 def contact_term_law(epsilon, s0, beta, cutoff=None):
     """`HalfSpaceLaw` of a [[term]] type = "contact" (src/terms/contact/params.cpp) with
     its parameters: `epsilon` [J], `s0` [m], `beta` = [beta1, beta2] [1/m^3] (molecules
@@ -205,7 +210,7 @@ def contact_term_law(epsilon, s0, beta, cutoff=None):
     beta1, beta2 = beta
     if beta1 <= 0.0 or beta2 <= 0.0:
         raise ValueError("beta must be positive: for the term's beta = 0 give the particle number density N / V")
-    rc = 3.0 * s0 if cutoff is None else cutoff
+    rc = cutoff_or_default(cutoff, s0)
     if rc <= s0:
         raise ValueError(f"cutoff {rc} must exceed s0 = {s0} (as the contact term requires)")
     return half_space_law(lennard_jones(epsilon, s0), rc, beta1, beta2, s0)

@@ -42,6 +42,7 @@ import sys
 import numpy as np
 
 from convergence_fit import richardson
+from contact_theory import cutoff_or_default
 from layered_contact import adhesion_ratio
 from study_runs import study_parser, write_results, load_scene, run_scene, study_load, study_wall_seconds
 
@@ -84,8 +85,6 @@ def variant(cells, grading, t_end=None, block_cells=None, shift=0.0, substrate=N
 
 # --fine: (cells across the cell, the block's cells [x, y, z], the cell's start moved along
 # y by this fraction of the block's spacing, the group the row belongs to)
-# The contact term's default cutoff in s0 (docs/theory/contact.md); the crawling scene keeps it.
-CUTOFF_IN_S0 = 3.0
 # At zero load JKR's contact radius grows as w^(1/3), so the contact energy, w times the
 # patch's area, as w^(5/3): the exponent that maps the layered bodies' adhesion energy
 # error onto the contact energy and the velocity.
@@ -416,7 +415,7 @@ def layered_ratio(scene):
     s0 = term["s0"]
     return adhesion_ratio(2.0 * cell["cloud"]["radius"] / cell["cloud"]["cells"],
                           block["cloud"]["size"][2] / block["cloud"]["cells"][2], term["epsilon"], s0,
-                          math.sqrt(term["beta"][0] * term["beta"][1]), term.get("cutoff", CUTOFF_IN_S0 * s0))
+                          math.sqrt(term["beta"][0] * term["beta"][1]), cutoff_or_default(term.get("cutoff"), s0))
 
 
 def fine_table(rows, loads):
@@ -468,9 +467,11 @@ def fine_table(rows, loads):
         v = np.mean([r["velocity_m_per_s"] for r in mine])
         v_over = np.mean([r["velocity_overdamped_m_per_s"] for r in mine])
         scale = mine[0]["layered_ratio"] ** CONTACT_ENERGY_EXPONENT
-        means.append((cells, energy.mean(), v / v_over, v_over / energy.mean(), v / scale))
-        lines.append(f"- matched ladder, {cells} cells ({mine[0]['substrate_cells']} block), {len(mine)} starts: contact "
-                     f"energy {energy.mean() * 1e15:.2f} fJ (spread {100 * np.ptp(energy) / energy.mean():.1f} %), "
+        error = np.std([r["velocity_m_per_s"] for r in mine], ddof=1) / math.sqrt(len(mine)) / scale
+        means.append((cells, energy.mean(), v / v_over, v_over / energy.mean(), v / scale, error))
+        lines.append(f"- matched ladder, {cells} cells ({mine[0]['substrate_cells']} block), {len(mine)} starts: "
+                     f"contact energy {energy.mean() * 1e15:.2f} fJ "
+                     f"(spread {100 * np.ptp(energy) / energy.mean():.1f} %), "
                      f"overdamped velocity {v_over * 1e3:.3f} nm/us, mean velocity {v * 1e3:.3f} nm/us, ratio "
                      f"{v / v_over:.2f}; layered w / continuum w {mine[0]['layered_ratio']:.3f}: contact energy over "
                      f"(w ratio)^(5/3) {energy.mean() / scale * 1e15:.2f} fJ, mean velocity over it "
@@ -487,8 +488,9 @@ def fine_table(rows, loads):
         corrected = [m[4] for m in finest]
         d = abs(corrected[-1] / corrected[-2] - 1.0)
         lines.append(f"- the matched ladder's mean velocity over (w ratio)^(5/3), three finest: "
-                     f"{', '.join(f'{v * 1e3:.3f}' for v in corrected)} nm/us; two finest {100 * d:.1f} % apart "
-                     f"(criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}")
+                     f"{', '.join(f'{m[4] * 1e3:.3f} +- {m[5] * 1e3:.3f}' for m in finest)} nm/us (standard errors "
+                     f"of the registry means); two finest {100 * d:.1f} % apart (criterion: within 10 %): "
+                     f"{'met' if d <= 0.1 else 'not met'}")
     once = {r["folder"]: r for r in rows}.values()
     ratios = np.array([r["velocity_m_per_s"] / r["velocity_overdamped_m_per_s"] for r in once])
     lines.append(f"- velocity / overdamped velocity over the {len(ratios)} runs: {ratios.min():.2f} to "

@@ -213,7 +213,7 @@ def adhered_sphere(R, E_star, epsilon, s0, beta, cutoff=None, load=0.0, rings=40
     """The self-consistent `DerjaguinContact` at `load` [N] of a sphere of radius R [m],
     combined modulus E* [Pa], under the contact term's law (epsilon [J], s0 [m], beta
     [1/m^3] per body, cutoff [m], default 3 s0; `contact_theory.contact_term_law`)."""
-    rc = 3.0 * s0 if cutoff is None else cutoff
+    rc = T.cutoff_or_default(cutoff, s0)
     halves = T.contact_term_law(epsilon, s0, beta, rc)
     law = TractionLaw(T.lennard_jones(epsilon, s0), rc, beta[0], beta[1], halves.z0)
     return AdheredSphereSolver(R, E_star, law, halves.z0, rings=rings, profile=profile).at_load(load)
