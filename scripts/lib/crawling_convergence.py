@@ -83,12 +83,12 @@ def variant(cells, grading, t_end=None, block_cells=None, shift=0.0, substrate=N
     return scene
 
 
-# --fine: (cells across the cell, the block's cells [x, y, z], the cell's start moved along
-# y by this fraction of the block's spacing, the group the row belongs to)
 # At zero load JKR's contact radius grows as w^(1/3), so the contact energy, w times the
 # patch's area, as w^(5/3): the exponent that maps the layered bodies' adhesion energy
 # error onto the contact energy and the velocity.
 CONTACT_ENERGY_EXPONENT = 5.0 / 3.0
+# --fine: (cells across the cell, the block's cells [x, y, z], the cell's start moved along
+# y by this fraction of the block's spacing, the group the row belongs to)
 FINE_RUNS = ((17, (100, 100, 4), 0.0, "fine x, y"), (21, (100, 100, 5), 0.0, "fine x, y"),
              (25, (100, 100, 6), 0.0, "fine x, y"), (29, (100, 100, 7), 0.0, "fine x, y"),
              (17, (100, 100, 4), 0.5, "registry"),
@@ -383,25 +383,20 @@ def run_registry(args):
     return 0
 
 
-def drift_at(folder, t):
-    """The centroid's drift along y at time t [s], interpolated in the run's history."""
-    h = history(folder)
-    return float(np.interp(t, h["time"], h["centroid_y"] - h["centroid_y"][0]))
-
-
 def overdamped_velocity(folder, scene):
     """The contact term's energy E at the end of a graded run, and the velocity of an
     overdamped cell under the force that energy implies. With the linear stiffness law
     every pair's eps follows the substrate's modulus, so a rigid shift dy of the cell
     changes E by E (d ln mu / dy) dy, with mu's factor grade_a (y - y_min) / L0 + grade_b
-    (Eq. 18) taken at the block's middle, where the cell sits; the damping c resists the
-    cell's mass m with c m v. Returns (E [J], v [m/s])."""
+    (Eq. 18) taken at the cell's start (it moves less than 0.2 um); the damping c resists
+    the cell's mass m with c m v. Returns (E [J], v [m/s])."""
     summary = json.load(open(os.path.join(folder, "summary.json")))
     energy = summary["contact cell substrate"]["energy"]
     cell, block = scene["body"]
     a, b = block["material"]["grade_a"], block["material"]["grade_b"]
     length = block["cloud"]["size"][1]
-    log_gradient = (a / length) / (0.5 * a + b)
+    along = (cell["cloud"]["center"][1] - block["cloud"]["origin"][1]) / length
+    log_gradient = (a / length) / (a * along + b)
     mass = cell["density"] * 4.0 / 3.0 * math.pi * cell["cloud"]["radius"] ** 3
     return energy, -energy * log_gradient / (scene["integrator"]["damping"] * mass)
 
@@ -435,7 +430,7 @@ def fine_table(rows, loads):
                      f"{r['velocity_m_per_s'] * 1e3:.3f} | {r['velocity_earlier_m_per_s'] * 1e3:.3f} | "
                      f"{-r['contact_energy_J'] * 1e15:.2f} | {r['velocity_overdamped_m_per_s'] * 1e3:.3f} | "
                      f"{r['velocity_m_per_s'] / r['velocity_overdamped_m_per_s']:.2f} | {r['layered_ratio']:.3f} | "
-                     f"{r['velocity_continuum_m_per_s'] * 1e3:.3f} | {r['wall_s']:.0f} |")
+                     f"{r['velocity_layer_corrected_m_per_s'] * 1e3:.3f} | {r['wall_s']:.0f} |")
     lines.append("")
     group = {}
     for r in rows:
@@ -452,14 +447,15 @@ def fine_table(rows, loads):
         if len(mine) >= 2:
             a, b = mine[-2], mine[-1]
             d = abs(b["velocity_m_per_s"] - a["velocity_m_per_s"]) / abs(b["velocity_m_per_s"])
-            dc = abs(b["velocity_continuum_m_per_s"] / a["velocity_continuum_m_per_s"] - 1.0)
+            dc = abs(b["velocity_layer_corrected_m_per_s"] - a["velocity_layer_corrected_m_per_s"]) / abs(
+                b["velocity_layer_corrected_m_per_s"])
             lines.append(f"- {name}, two finest ({a['cells']} and {b['cells']} cells): velocity "
                          f"{a['velocity_m_per_s'] * 1e3:.3f} and {b['velocity_m_per_s'] * 1e3:.3f} nm/us, "
                          f"{100 * d:.1f} % apart (criterion: within 10 %): {'met' if d <= 0.1 else 'not met'}; "
                          f"contact energy {-a['contact_energy_J'] * 1e15:.2f} and "
                          f"{-b['contact_energy_J'] * 1e15:.2f} fJ; over (w ratio)^(5/3): "
-                         f"{a['velocity_continuum_m_per_s'] * 1e3:.3f} and {b['velocity_continuum_m_per_s'] * 1e3:.3f} "
-                         f"nm/us, {100 * dc:.1f} % apart")
+                         f"{a['velocity_layer_corrected_m_per_s'] * 1e3:.3f} and "
+                         f"{b['velocity_layer_corrected_m_per_s'] * 1e3:.3f} nm/us, {100 * dc:.1f} % apart")
     means = []
     for cells in sorted({r["cells"] for r in group.get("matched", [])}):
         mine = [r for r in group["matched"] if r["cells"] == cells]
@@ -486,7 +482,7 @@ def fine_table(rows, loads):
             lines.append(f"- the velocity that energy implies at the three finest's mean ratio {ratio:.2f}: "
                          f"{ratio * per_energy * e.q_inf * 1e3:.2f} +- {ratio * per_energy * e.gci * 1e3:.2f} nm/us")
         corrected = [m[4] for m in finest]
-        d = abs(corrected[-1] / corrected[-2] - 1.0)
+        d = abs(corrected[-1] - corrected[-2]) / abs(corrected[-1])
         lines.append(f"- the matched ladder's mean velocity over (w ratio)^(5/3), three finest: "
                      f"{', '.join(f'{m[4] * 1e3:.3f} +- {m[5] * 1e3:.3f}' for m in finest)} nm/us (standard errors "
                      f"of the registry means); two finest {100 * d:.1f} % apart (criterion: within 10 %): "
@@ -524,7 +520,8 @@ def fine_plot(rows, path):
     axes[0].legend(fontsize=8)
     axes[0].grid(True, alpha=0.3)
     scaled = [r["layered_ratio"] ** CONTACT_ENERGY_EXPONENT for r in rows]
-    per_unit = float(np.median([-r["contact_energy_J"] / x for r, x in zip(rows, scaled)]))
+    once = {r["folder"]: (r, x) for r, x in zip(rows, scaled)}.values()
+    per_unit = float(np.median([-r["contact_energy_J"] / x for r, x in once]))
     for cells, color in ((17, "C0"), (21, "C1"), (25, "C2"), (29, "C3")):
         for name, marker in markers.items():
             mine = [(x, r) for x, r in zip(scaled, rows) if r["cells"] == cells and r["group"] == name]
@@ -552,12 +549,13 @@ def run_fine(args):
         row["contact_energy_J"], row["velocity_overdamped_m_per_s"] = overdamped_velocity(row["folder"], scene)
         row["start_shift"], row["group"] = shift, group
         row["layered_ratio"] = layered_ratio(scene)
-        row["velocity_continuum_m_per_s"] = row["velocity_m_per_s"] / row["layered_ratio"] ** CONTACT_ENERGY_EXPONENT
+        row["velocity_layer_corrected_m_per_s"] = (row["velocity_m_per_s"]
+                                                   / row["layered_ratio"] ** CONTACT_ENERGY_EXPONENT)
         rows.append(row)
         loads.append(load)
     write_results(args.out, "crawling_convergence_fine", rows,
                   ["group"] + CSV_COLUMNS + ["start_shift", "contact_energy_J", "velocity_overdamped_m_per_s",
-                                             "layered_ratio", "velocity_continuum_m_per_s"],
+                                             "layered_ratio", "velocity_layer_corrected_m_per_s"],
                   fine_table(rows, loads), lambda path: fine_plot(rows, path))
     return 0
 

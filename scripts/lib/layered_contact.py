@@ -4,13 +4,16 @@ layers, against the continuum's (docs/verification/crawling.md, "What sets the v
 The contact term sums the pair law over particles that carry their dual cells' molecules
 at their own positions (docs/theory/contact.md). Two flat bodies of layer spacings c1
 and c2 are then stacks of planes: interior layers carry beta c molecules per area, the
-surface layer beta c / 2 (its dual cell is half a cell deep), all at the surface. Along
-the surface the sum over a lattice equals the integral up to terms exponentially small
-in gap / lateral spacing (Poisson summation), so each layer is taken as a continuous
-plane, and a molecule at distance D from a plane of unit areal density has the energy
-2 pi int_D^rc (phi(r) - phi(rc)) r dr. The pair sum across the surface is a trapezoid
-rule of the continuum's integral over depth; with layers as deep as s0 it misses the
-continuum's adhesion energy by tens of per cent, and not monotonically."""
+surface layer beta c / 2 (its dual cell is half a cell deep), all at the surface. Each
+layer is taken as a continuous plane: a molecule at distance D from a plane of unit
+areal density has the energy 2 pi int_D^rc (phi(r) - phi(rc)) r dr. This is the depth
+part of the discretisation alone. Along the surface a lattice's sum differs from the
+plane's by terms that are exponentially small only where the lateral spacing is small
+against the gap; at lateral spacings near s0 a molecule over a site and one over a
+hollow see very different sums, and what is left of that after averaging over a curved
+body's mismatched lattice is not modelled here. The pair sum across the surface is a
+trapezoid rule of the continuum's integral over depth; with layers as deep as s0 it
+misses the continuum's adhesion energy by tens of per cent, and not monotonically."""
 import math
 
 import numpy as np
@@ -94,11 +97,16 @@ class LayeredTraction:
         self._depths = (z1[:, None] + z2[None, :]).ravel()
         self._weights = np.outer(w1, w2).ravel()
         self._at_cutoff = lennard_jones(epsilon, s0)(cutoff)
+        self.low = 0.3 * 0.3 * s0
         self.z0 = optimize.brentq(lambda d: float(self(np.array([d]))[0]), 0.3 * s0, 1.2 * s0, xtol=1e-15)
         self.low = 0.3 * self.z0
 
     def _pairs(self, D):
-        r = np.asarray(D, dtype=float)[..., None] + self._depths
+        D = np.asarray(D, dtype=float)
+        if np.min(D) < self.low:
+            # As derjaguin_contact.TractionLaw: Newton's line search takes this as a step too far.
+            raise FloatingPointError(f"a gap of {np.min(D):.4g} m, below the law's range (from {self.low:.4g} m)")
+        r = D[..., None] + self._depths
         return r, r < self.cutoff
 
     def __call__(self, D):

@@ -21,7 +21,7 @@
 #           on a block 0.5 s0 apart along z too, each run's contact energy with the
 #           overdamped velocity it implies and the layered bodies' adhesion energy at
 #           its spacings (scripts/lib/layered_contact.py); reuses the --split and
-#           --registry runs (about 75 minutes beyond them), writing
+#           --registry runs (about 90 minutes beyond them), writing
 #           docs/figures/crawling_convergence_fine.{csv,png} and the generated table
 #           (crawling-convergence --fine) of docs/verification/crawling.md.
 # Usage: scripts/study crawling-convergence [--coarse] [--long | --split | --registry [--cells N ...] | --fine]
