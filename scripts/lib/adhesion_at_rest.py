@@ -71,9 +71,7 @@ class AdhesionScene:
         self.law = T.contact_term_law(contact["epsilon"], contact["s0"], contact["beta"], contact.get("cutoff"))
         self.law_parameters = (contact["epsilon"], contact["s0"], tuple(contact["beta"]), contact.get("cutoff"))
         self.s0 = contact["s0"]
-        # The layers the contact term's pair sum sees: the sphere's at its pole, the
-        # block's along z (layered_contact).
-        self.layer_spacings = (self.spacing, block["cloud"]["size"][2] / block["cloud"]["cells"][2])
+        self.layer_spacings = layered_contact.cloud_layer_spacings(sphere["cloud"], block["cloud"])
 
     def theory(self):
         """The three theories at zero load (`contact_theory.adhered_sphere`), and the edge
@@ -148,6 +146,8 @@ def compare(scene_path, run_dir):
     edge, force, core_z = scene.measure(run_dir)
     summary = json.load(open(f"{run_dir}/summary.json"))
     delta_theory = {"JKR": sphere.delta_jkr, "DMT": sphere.delta_dmt, "MD": sphere.delta_md}[sphere.regime]
+    a_law, approach_law = scene.law_solution("sphere")
+    a_layered, _ = scene.layered_solution()
     return {
         "particles": summary["total_particles"], "sphere_particles": summary["particle_counts"][scene.names[0]],
         "converged": summary.get("converged"), "steps": summary["steps"], "wall_s": summary["wall_time"],
@@ -157,9 +157,9 @@ def compare(scene_path, run_dir):
         "contact_radius_theory": {"JKR": sphere.a_jkr, "DMT": sphere.a_dmt, "MD": sphere.a_md}[sphere.regime],
         "core_z": core_z, "approach_sim": scene.resting_centre() - core_z, "approach_theory": delta_theory,
         "compressive_force": force,
-        "a_law_paraboloid": scene.law_solution("paraboloid")[0], "a_law_sphere": scene.law_solution("sphere")[0],
-        "rel_error_law": edge / scene.law_solution("sphere")[0] - 1.0, "approach_law": scene.law_solution("sphere")[1],
-        "a_layered": scene.layered_solution()[0], "rel_error_layered": edge / scene.layered_solution()[0] - 1.0,
+        "a_law_paraboloid": scene.law_solution("paraboloid")[0], "a_law_sphere": a_law,
+        "rel_error_law": edge / a_law - 1.0, "approach_law": approach_law,
+        "a_layered": a_layered, "rel_error_layered": edge / a_layered - 1.0,
     }
 
 

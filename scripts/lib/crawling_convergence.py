@@ -26,7 +26,7 @@ block's spacing along y at every resolution: the velocity averaged over the two 
 registry, with the standard error of that mean (--cells limits the resolutions). The
 unshifted runs are the --long runs, the 17-cell shifted ones --split's.
 
-With --fine, what sets the crawl's velocity and its resolution dependence (FINE_RUNS):
+With --fine, what sets the crawl's velocity and its resolution dependence (`fine_runs`):
 the ladder on a block 0.5 s0 apart along x and y (100 x 100 cells, its cells along z
 refined with the cell), its coarsest with the cell's start moved by half that spacing,
 the two finest on a block also 0.5 s0 apart along z, and the cell at 17 and 29 cells on
@@ -43,7 +43,7 @@ import numpy as np
 
 from convergence_fit import richardson
 from contact_theory import cutoff_or_default
-from layered_contact import adhesion_ratio
+from layered_contact import adhesion_ratio, cloud_layer_spacings
 from study_runs import study_parser, write_results, load_scene, run_scene, study_load, study_wall_seconds
 
 SCENE = "examples/crawling/crawling.toml"
@@ -87,16 +87,22 @@ def variant(cells, grading, t_end=None, block_cells=None, shift=0.0, substrate=N
 # patch's area, as w^(5/3): the exponent that maps the layered bodies' adhesion energy
 # error onto the contact energy and the velocity.
 CONTACT_ENERGY_EXPONENT = 5.0 / 3.0
-# --fine: (cells across the cell, the block's cells [x, y, z], the cell's start moved along
-# y by this fraction of the block's spacing, the group the row belongs to)
+# --fine's own runs: (cells across the cell, the block's cells [x, y, z], the cell's start
+# moved along y by this fraction of the block's spacing, the group the row belongs to);
+# `fine_runs` adds the matched ladder's registry runs.
 FINE_RUNS = ((17, (100, 100, 4), 0.0, "fine x, y"), (21, (100, 100, 5), 0.0, "fine x, y"),
              (25, (100, 100, 6), 0.0, "fine x, y"), (29, (100, 100, 7), 0.0, "fine x, y"),
              (17, (100, 100, 4), 0.5, "registry"),
              (25, (100, 100, 12), 0.0, "fine x, y, z"), (29, (100, 100, 12), 0.0, "fine x, y, z"),
              (17, (40, 40, 4), 0.0, "split"), (17, (48, 48, 5), 0.0, "split"), (17, (56, 56, 6), 0.0, "split"),
-             (17, (68, 68, 7), 0.0, "split"), (29, (40, 40, 4), 0.0, "split"), (29, (68, 68, 7), 0.0, "split")) + tuple(
-    (cells, tuple(variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]), shift, "matched")
-    for cells in FULL_CELLS for shift in REGISTRY_SHIFTS)
+             (17, (68, 68, 7), 0.0, "split"), (29, (40, 40, 4), 0.0, "split"), (29, (68, 68, 7), 0.0, "split"))
+
+
+def fine_runs():
+    """FINE_RUNS, then the matched ladder's runs at every registry shift (--registry's)."""
+    matched = {cells: tuple(variant(cells, RUNS["graded"])["body"][1]["cloud"]["cells"]) for cells in FULL_CELLS}
+    return FINE_RUNS + tuple((cells, matched[cells], shift, "matched")
+                             for cells in FULL_CELLS for shift in REGISTRY_SHIFTS)
 
 
 def history(folder):
@@ -402,14 +408,12 @@ def overdamped_velocity(folder, scene):
 
 
 def layered_ratio(scene):
-    """The adhesion energy of flat bodies with the scene's layer spacings (the cell's
-    2 R / cells at its pole, the block's along z) over the continuum's
-    (layered_contact.adhesion_ratio)."""
+    """The adhesion energy of flat bodies with the scene's layer spacings
+    (layered_contact.cloud_layer_spacings) over the continuum's (adhesion_ratio)."""
     cell, block = scene["body"]
     term = scene["term"][0]
     s0 = term["s0"]
-    return adhesion_ratio(2.0 * cell["cloud"]["radius"] / cell["cloud"]["cells"],
-                          block["cloud"]["size"][2] / block["cloud"]["cells"][2], term["epsilon"], s0,
+    return adhesion_ratio(*cloud_layer_spacings(cell["cloud"], block["cloud"]), term["epsilon"], s0,
                           math.sqrt(term["beta"][0] * term["beta"][1]), cutoff_or_default(term.get("cutoff"), s0))
 
 
@@ -544,7 +548,7 @@ def fine_plot(rows, path):
 
 def run_fine(args):
     rows, loads = [], []
-    for cells, substrate, shift, group in FINE_RUNS:
+    for cells, substrate, shift, group in fine_runs():
         row, scene, load = run_long_graded(args, cells, shift=shift, substrate=substrate)
         row["contact_energy_J"], row["velocity_overdamped_m_per_s"] = overdamped_velocity(row["folder"], scene)
         row["start_shift"], row["group"] = shift, group

@@ -34,6 +34,12 @@ def plane_energy(D, epsilon, s0, cutoff):
             - math.pi * at_cutoff * (cutoff ** 2 - D ** 2))
 
 
+def cloud_layer_spacings(sphere_cloud, block_cloud):
+    """The layer spacings [m] the pair sum sees between a `sphere` cloud on a `block`
+    cloud's top face: the sphere's 2 R / cells at its pole, the block's along z."""
+    return (2.0 * sphere_cloud["radius"] / sphere_cloud["cells"], block_cloud["size"][2] / block_cloud["cells"][2])
+
+
 def layers(spacing, beta, depth):
     """Depths [m] below the surface and areal densities [1/m^2] of a body's particle
     layers down to `depth`: the surface layer carries half a layer's molecules."""
@@ -96,8 +102,9 @@ class LayeredTraction:
         z2, w2 = layers(spacing2, beta, cutoff)
         self._depths = (z1[:, None] + z2[None, :]).ravel()
         self._weights = np.outer(w1, w2).ravel()
-        self._at_cutoff = lennard_jones(epsilon, s0)(cutoff)
-        self.low = 0.3 * 0.3 * s0
+        self._phi = lennard_jones(epsilon, s0)
+        self._at_cutoff = self._phi(cutoff)
+        self.low = 0.0  # the range below is set from z0, which the bracket from 0.3 s0 finds
         self.z0 = optimize.brentq(lambda d: float(self(np.array([d]))[0]), 0.3 * s0, 1.2 * s0, xtol=1e-15)
         self.low = 0.3 * self.z0
 
@@ -111,13 +118,12 @@ class LayeredTraction:
 
     def __call__(self, D):
         r, inside = self._pairs(D)
-        u6 = (self.s0 / r) ** 6
-        phi = self.epsilon * (u6 * u6 - 2.0 * u6)
-        return 2.0 * math.pi * np.sum(np.where(inside, self._weights * (phi - self._at_cutoff) * r, 0.0), axis=-1)
+        return 2.0 * math.pi * np.sum(np.where(inside, self._weights * (self._phi(r) - self._at_cutoff) * r, 0.0),
+                                      axis=-1)
 
     def slope(self, D):
         r, inside = self._pairs(D)
         u6 = (self.s0 / r) ** 6
-        phi = self.epsilon * (u6 * u6 - 2.0 * u6)
-        r_dphi = self.epsilon * (-12.0 * u6 * u6 + 12.0 * u6)
-        return 2.0 * math.pi * np.sum(np.where(inside, self._weights * (r_dphi + phi - self._at_cutoff), 0.0), axis=-1)
+        r_dphi = self.epsilon * (-12.0 * u6 * u6 + 12.0 * u6)  # r phi'(r)
+        return 2.0 * math.pi * np.sum(np.where(inside, self._weights * (r_dphi + self._phi(r) - self._at_cutoff), 0.0),
+                                      axis=-1)
