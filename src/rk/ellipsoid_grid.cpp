@@ -38,6 +38,7 @@ EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Symme
   // Coarse cells of at least 1.5 a_max: a query's reach may then be up to C - a_max.
   per_coarse_ = std::max(1, static_cast<int>(std::ceil(1.5 * a_max / bucket_)));
   max_reach_ = per_coarse_ * bucket_ - a_max;
+  inverse_bucket_ = 1.0 / bucket_;
   for (int k = 0; k < 3; ++k) {
     dims_[k] = static_cast<int>(std::floor(extent(k) / bucket_)) + 1;
     coarse_dims_[k] = (dims_[k] + per_coarse_ - 1) / per_coarse_;
@@ -105,7 +106,9 @@ EllipsoidGrid::EllipsoidGrid(const std::vector<Vec3>& X, const std::vector<Symme
 }
 
 int EllipsoidGrid::bucket_index(int axis, double coordinate) const {
-  const double t = std::floor((coordinate - origin_(axis)) / bucket_);
+  // A product, not a quotient (a query's rows ask for two indices each): the index is
+  // still monotone in the coordinate, which is all the ranges need.
+  const double t = std::floor((coordinate - origin_(axis)) * inverse_bucket_);
   return static_cast<int>(std::clamp(t, 0.0, static_cast<double>(dims_[axis] - 1)));
 }
 
@@ -118,7 +121,7 @@ const std::array<double, 3>& EllipsoidGrid::spans_near(const Vec3& c) const {
   return spans_[coarse_of_bucket(bucket_index(0, c.x()), bucket_index(1, c.y()), bucket_index(2, c.z()))];
 }
 
-void EllipsoidGrid::ranges(const Vec3& c, double reach, double ball,
+void EllipsoidGrid::ranges(const Vec3& c, const Vec3& reach_along, double ball,
                            std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const {
   out.clear();
   if (order_.empty()) return;
@@ -128,7 +131,7 @@ void EllipsoidGrid::ranges(const Vec3& c, double reach, double ball,
   std::array<int, 3> lo{}, hi{};
   for (int a = 0; a < 3; ++a) {
     if (!(span[a] > 0.0)) return;  // no particle near
-    const double half = std::min((span[a] + reach) * (1.0 + 1e-9), ball);
+    const double half = std::min((span[a] + reach_along(a)) * (1.0 + 1e-9), ball);
     lo[a] = bucket_index(a, c(a) - half);
     hi[a] = bucket_index(a, c(a) + half);
   }

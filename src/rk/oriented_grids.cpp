@@ -119,11 +119,17 @@ OrientedGrids::OrientedGrids(const std::vector<Vec3>& X, const std::vector<Symme
     std::vector<double> a(m), b(m);
     cl.lo = cl.hi = X[static_cast<std::size_t>(ids.front())];
     double a_max = 0.0;
+    cl.frame_lo = Vec3::Constant(HUGE_VAL);
+    cl.frame_hi = -cl.frame_lo;
     for (std::size_t j = 0; j < m; ++j) {
       const auto i = static_cast<std::size_t>(ids[j]);
       // In the coordinate frame the copies are exact: a single class tests as one grid would.
       Xf[j] = oriented ? Vec3(cl.to_frame * X[i]) : X[i];
       Gf[j] = oriented ? symmetric_entries(cl.to_frame * matrix_of(metric[i]) * cl.to_frame.transpose()) : metric[i];
+      // The support spans sqrt((G^-1)_aa) along axis a of the frame (at most its longest semi-axis).
+      const Vec3 span = matrix_of(Gf[j]).inverse().diagonal().cwiseSqrt().cwiseMin(radius[i]) * (1.0 + 1e-9);
+      cl.frame_lo = cl.frame_lo.cwiseMin(Xf[j] - span);
+      cl.frame_hi = cl.frame_hi.cwiseMax(Xf[j] + span);
       a[j] = radius[i];
       b[j] = min_axis[i];
       cl.lo = cl.lo.cwiseMin(X[i]);
@@ -170,7 +176,15 @@ std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, 
   const auto query = [&](const OrientationClass& cl) {
     if ((c.array() < cl.lo.array() - reach).any() || (c.array() > cl.hi.array() + reach).any()) return;
     const Vec3 cf = oriented ? Vec3(cl.to_frame * c) : c;
-    cl.grid.ranges(cf, reach, ball, ranges);
+    if ((cf.array() < cl.frame_lo.array() - reach).any() || (cf.array() > cl.frame_hi.array() + reach).any()) return;
+    // The points' largest offsets from c along the frame's axes (each at most `reach`).
+    Vec3 e = Vec3::Constant(reach);
+    if (count > 0) {
+      e.setZero();
+      for (std::size_t p = 0; p < count; ++p)
+        e = e.cwiseMax((oriented ? Vec3(cl.to_frame * (points[p] - c)) : Vec3(points[p] - c)).cwiseAbs());
+    }
+    cl.grid.ranges(cf, e, ball, ranges);
     std::size_t visited = 0;
     for (const auto& range : ranges) visited += range.second - range.first;
     // Written in place and counted without a branch: about half the visited particles
@@ -203,10 +217,7 @@ std::size_t OrientedGrids::candidates(const Vec3& c, double reach, double ball, 
     if (count == 0) {
       sweep([&](std::uint32_t k) { return reach * inv_b[k]; });
     } else {
-      // The points' largest offsets along the frame's axes, and their products.
-      Vec3 e = Vec3::Zero();
-      for (std::size_t p = 0; p < count; ++p)
-        e = e.cwiseMax((oriented ? Vec3(cl.to_frame * (points[p] - c)) : Vec3(points[p] - c)).cwiseAbs());
+      // The products of the points' largest offsets along the frame's axes.
       const double e00 = e(0) * e(0), e11 = e(1) * e(1), e22 = e(2) * e(2);
       const double e01 = e(0) * e(1), e02 = e(0) * e(2), e12 = e(1) * e(2);
       sweep([&](std::uint32_t k) {

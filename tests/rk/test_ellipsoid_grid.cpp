@@ -116,11 +116,56 @@ void expect_no_particle_missed(const particles::Cloud& cloud, double reach_fract
   std::cout << "needed " << needed << ", visited " << visited << "\n";
 }
 
+// As expect_no_particle_missed, for points in a box of half-widths `half` (per axis)
+// around each centre: the query of a cell that is flat along some axes.
+void expect_no_particle_missed_in_box(const particles::Cloud& cloud, const Vec3& half_fraction) {
+  const auto supports = ellipsoidal_supports(cloud, 2.0);
+  std::vector<SymmetricEntries> metric;
+  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
+  const EllipsoidGrid grid(cloud.X, metric, supports.radius, supports.min_axis);
+  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+  const Vec3 half = half_fraction * a_max;
+  ASSERT_TRUE(grid.covers(half.maxCoeff()));
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t needed = 0, visited = 0, visited_by_radius = 0;
+  for (const Vec3& c : centres(cloud.X, rng, 60)) {
+    std::vector<Vec3> points{c};  // the box's corners and points inside it
+    for (int k = 0; k < 8; ++k) points.push_back(c + Vec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1).cwiseProduct(half));
+    for (int s = 0; s < 300; ++s) points.push_back(c + Vec3(unit(rng), unit(rng), unit(rng)).cwiseProduct(half));
+    std::set<Index> must;
+    for (std::size_t j = 0; j < cloud.X.size(); ++j)
+      for (const Vec3& p : points)
+        if (squared_q(supports.metric[j], p - cloud.X[j]) < 1.0) {
+          must.insert(static_cast<Index>(j));
+          break;
+        }
+    const double ball = (a_max + half.norm()) * (1.0 + 1e-9);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> ranges;
+    grid.ranges(c, half, ball, ranges);
+    std::set<Index> got;
+    for (const auto& [first, last] : ranges)
+      for (std::uint32_t k = first; k < last; ++k) got.insert(grid.order()[k]);
+    for (Index j : must) EXPECT_TRUE(got.count(j)) << "particle " << j << " reaches the box around ("
+                                                   << c.transpose() << ") but is not in the grid's ranges";
+    needed += must.size();
+    visited += got.size();
+    visited_by_radius += in_ranges(grid, c, half.norm(), ball).size();
+  }
+  EXPECT_GT(needed, 0u);
+  EXPECT_LT(visited, visited_by_radius) << "a flat box should visit fewer particles than its radius";
+}
+
 }  // namespace
 
 TEST(EllipsoidGrid, MissesNoSupportOnATiltedThinWall) {
   expect_no_particle_missed(thin_shell(), 0.0);
   expect_no_particle_missed(thin_shell(), 0.3);
+}
+
+TEST(EllipsoidGrid, MissesNoSupportReachingAFlatBox) {
+  expect_no_particle_missed_in_box(thin_shell(), Vec3(0.3, 0.05, 0.02));
+  expect_no_particle_missed_in_box(test::jittered_block(6, 0.25), Vec3(0.02, 0.4, 0.1));
 }
 
 TEST(EllipsoidGrid, MissesNoSupportInAJitteredBlock) {

@@ -79,7 +79,14 @@ class EllipsoidGrid {
   // support can reach a point within `reach` of c, and also lies within `ball` of c
   // (an upper bound of a_J + reach the caller knows: SupportBound). A superset: the
   // caller tests each particle. Requires covers(reach).
-  void ranges(const Vec3& c, double reach, double ball, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const;
+  void ranges(const Vec3& c, double reach, double ball, std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const {
+    ranges(c, Vec3::Constant(reach), ball, out);
+  }
+  // The same for points within `reach_along(a)` of c along each axis a (of the grid's
+  // frame): a query cell that is flat in the frame of needle-shaped supports reaches
+  // across them by its own width, not by its radius.
+  void ranges(const Vec3& c, const Vec3& reach_along, double ball,
+              std::vector<std::pair<std::uint32_t, std::uint32_t>>& out) const;
 
   // The particles in bucket order, and the supports' shapes in that order.
   const std::vector<Index>& order() const { return order_; }
@@ -99,6 +106,7 @@ class EllipsoidGrid {
 
   Vec3 origin_ = Vec3::Zero();
   double bucket_ = 1.0;  // s
+  double inverse_bucket_ = 1.0;
   int per_coarse_ = 1;   // C / s
   double max_reach_ = 0.0;
   std::array<int, 3> dims_{1, 1, 1};         // buckets along each axis

@@ -19,8 +19,11 @@
 // members' positions and metrics turned into that frame. The regions keep each grid
 // compact (a class spread over the whole wall would get buckets as coarse as its box is
 // sparse; measured: more visits than the single grid). A query turns the centre into the
-// frame of each class in the 27 regions around it whose members lie near enough, and
-// asks its grid. Supports that are nearly balls (median longest over shortest semi-axis
+// frame of each class in the 27 regions around it whose members lie near enough, skips
+// the class if the box of its supports in that frame is out of reach, and asks its grid
+// for the box of the query's points in that frame (a query cell as deep as the wall's
+// layer spacing is flat across the needles: its radius would widen every row of the
+// query by the cell's depth). Supports that are nearly balls (median longest over shortest semi-axis
 // below kAnisotropy) have no long axis worth following: one class in the coordinate
 // frame, the single grid as before.
 #pragma once
@@ -65,6 +68,7 @@ class OrientedGrids {
   struct OrientationClass {
     Mat3 to_frame = Mat3::Identity();  // rows: the frame's axes
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();  // the members' box (coordinate frame), grown by their longest semi-axis
+    Vec3 frame_lo = Vec3::Zero(), frame_hi = Vec3::Zero();  // the box of the members' supports in the class's frame
     std::vector<Index> ids;     // the members, in the grid's bucket order
     std::vector<Vec3> X;        // their positions in the frame, in the grid's bucket order
     EllipsoidGrid grid;

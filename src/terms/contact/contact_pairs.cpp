@@ -68,12 +68,16 @@ void ContactPairs::rebuild(const std::vector<Vec3>& xa, Index row_begin, Index r
       std::vector<std::pair<Index, double>> found;
 #pragma omp for schedule(dynamic, 64)
       for (Index i = row_begin; i < row_end; ++i) {
-        search.query(xa[i], radius, found);  // sorted by position in `listed`
+        // Unordered, then only the kept partners sorted: a term that excludes its own
+        // wall's neighbours keeps a few of hundreds of candidates on a fine shell, and
+        // sorting them all was a sixth of a 1e6-particle shell's initialization.
+        search.query_unordered(xa[i], radius, found);
         auto& row = rows[static_cast<std::size_t>(i)];
         for (const auto& f : found) {
           const Index j = columns[static_cast<std::size_t>(f.first)];
           if (!keep_ || keep_(i, j)) row.push_back(j);
         }
+        std::sort(row.begin(), row.end());  // increasing columns: the fixed summation order
       }
     }
   }
