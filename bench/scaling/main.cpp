@@ -82,6 +82,9 @@ int main(int argc, char** argv) {
   app.add_flag("--no-split", no_split, "do not time the parts of build_world separately");
   app.add_option("--triad-mib", triad_mib, "size of each triad array [MiB]");
   app.add_option("--triad-repetitions", study.triad_repetitions, "triad repetitions (the best counts)");
+  app.add_option("--setup-runs", study.setup_runs,
+                 "processes measuring the set-up from 1e5 particles on (the median is kept)")
+      ->check(CLI::Range(1, 9));
   app.add_option("--rbc-relaxation-wall", rbc.wall_s, "wall time of the default RBC relaxation [s] (from the script)");
   app.add_option("--rbc-relaxation-steps", rbc.steps, "its steps");
   app.add_option("--rbc-relaxation-status", rbc.status, "its status");

@@ -39,6 +39,7 @@ const std::vector<std::pair<const char*, double SizeResult::*>>& numeric_fields(
       {"gradient_row_p95", &SizeResult::gradient_row_p95},
       {"gradient_row_max", &SizeResult::gradient_row_max},
       {"interpolation_row_mean", &SizeResult::interpolation_row_mean},
+      {"setup_runs", &SizeResult::setup_runs},
   };
   return fields;
 }

@@ -1,6 +1,7 @@
 #include "study.hpp"
 
 #include "memory.hpp"
+#include "report.hpp"
 #include "subprocess.hpp"
 
 #include <fmt/format.h>
@@ -66,6 +67,38 @@ PeakResult parse_peak(const std::string& output) {
   return p;
 }
 
+// The RESULT line of a child's output, read into r; false if it printed none.
+bool read_result(const ChildOutcome& child, SizeResult& r) {
+  bool found = false;
+  std::istringstream lines(child.output);
+  std::string line;
+  while (std::getline(lines, line)) found = from_line(line, r) || found;
+  return found;
+}
+
+// Replaces r's set-up (build_world and initialize) by the median of s.setup_runs
+// processes, r's own run included; the others only set up (no split, no steps). The
+// parts timed one by one stay r's own.
+void median_setup(bench::Geometry g, int resolution, const StudySettings& s, SizeResult& r) {
+  MeasureSettings setup_only = s.measure;
+  setup_only.split = false;
+  setup_only.warmup = setup_only.steps = setup_only.steps_1t = 0;
+  std::vector<std::pair<double, double>> runs{{r.setup_s, r.init_s}};
+  for (int k = 1; k < s.setup_runs; ++k) {
+    const ChildOutcome child = run_self(child_arguments(g, resolution, setup_only));
+    SizeResult again;
+    if (read_result(child, again) && child.ok && again.status == "ok") runs.emplace_back(again.setup_s, again.init_s);
+  }
+  std::sort(runs.begin(), runs.end(),
+            [](const auto& a, const auto& b) { return a.first + a.second < b.first + b.second; });
+  const auto& median = runs[(runs.size() - 1) / 2];
+  r.setup_s = median.first;
+  r.init_s = median.second;
+  r.setup_runs = static_cast<double>(runs.size());
+  fmt::print(stderr, "{} {} particles: set-up {} runs, median {:.3f} s\n", r.geometry, r.particles, runs.size(),
+             median.first + median.second);
+}
+
 }  // namespace
 
 std::vector<std::string> child_arguments(bench::Geometry g, int resolution, const MeasureSettings& m) {
@@ -120,13 +153,11 @@ StudyResult run_study(const StudySettings& s) {
         fmt::print(stderr, "{} resolution {} ({} particles): running\n", r.geometry, resolution, r.particles);
         const ChildOutcome child = run_self(child_arguments(g, resolution, s.measure));
         SizeResult measured;
-        bool found = false;
-        std::istringstream lines(child.output);
-        std::string line;
-        while (std::getline(lines, line)) found = from_line(line, measured) || found;
+        const bool found = read_result(child, measured);
         if (child.ok && found) {
           r = measured;
           if (r.particles > 0 && r.peak_bytes > 0) bytes_per_particle = r.peak_bytes / r.particles;
+          if (r.particles >= Targets{}.setup_exponent_from) median_setup(g, resolution, s, r);
         } else {
           r.status = "failed";
           r.note = found && !measured.note.empty() ? measured.note : child.status;

@@ -21,6 +21,10 @@ struct StudySettings {
   MeasureSettings measure;
   std::size_t triad_array_bytes = std::size_t{256} << 20;
   int triad_repetitions = 10;
+  // From setup_exponent_from (report.hpp's Targets) on, the set-up is measured in this
+  // many processes and the median kept: one run's set-up varies by about 5 % on a shared
+  // machine, which moves an exponent fitted over one decade by 0.02.
+  int setup_runs = 3;
 };
 
 struct StudyResult {

@@ -11,7 +11,7 @@
 # a full run (--max 1000000 with the RBC run, the default) also copies them to
 # docs/figures/ and the tables into docs/verification/performance.md.
 # Usage: scripts/study scaling [--native] [--coarse] [--max N] [--no-rbc-run] [rkpm_scaling options...]
-#   --max defaults to 1000000 (about 5 minutes on 2 cores; 100000 takes a few).
+#   --max defaults to 1000000 (about 7 minutes on 2 cores; 100000 takes a few).
 #   --coarse: --max 100000 --no-rbc-run; docs untouched.
 #   --no-rbc-run skips the default RBC relaxation's timing.
 #   --native: the same study with a build for this machine's instruction set
