@@ -107,6 +107,8 @@ SizeResult measure_size(bench::Geometry geometry, int resolution, const MeasureS
     sim::Integrator integrator(*world, sim::integrator_settings(scene));
     r.init_s = seconds_of([&] { integrator.initialize(); });
     r.particles = static_cast<double>(world->particle_count());
+    // A child asked for the set-up alone (no steps: the study's repeated set-ups) stops here.
+    if (settings.steps == 0 && settings.steps_1t == 0 && settings.warmup == 0) return r;
     const bench::Footprint fp = bench::footprint(*world);
     r.operators_bytes = static_cast<double>(fp.operators);
     r.state_bytes = static_cast<double>(fp.state);

@@ -8,7 +8,7 @@ namespace rkpm::scaling {
 
 double SizeResult::other_setup_s() const {
   if (gradient_s <= 0.0) return 0.0;
-  return setup_s - cloud_s - tree_s - gradient_s - interpolation_s - boundary_s;
+  return (split_run_setup_s > 0.0 ? split_run_setup_s : setup_s) - cloud_s - tree_s - gradient_s - interpolation_s - boundary_s;
 }
 
 const std::vector<std::pair<const char*, double SizeResult::*>>& numeric_fields() {
@@ -40,6 +40,7 @@ const std::vector<std::pair<const char*, double SizeResult::*>>& numeric_fields(
       {"gradient_row_max", &SizeResult::gradient_row_max},
       {"interpolation_row_mean", &SizeResult::interpolation_row_mean},
       {"setup_runs", &SizeResult::setup_runs},
+      {"split_run_setup_s", &SizeResult::split_run_setup_s},
   };
   return fields;
 }

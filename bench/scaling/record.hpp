@@ -20,7 +20,8 @@ struct SizeResult {
   double setup_s = 0, init_s = 0;
   double cloud_s = 0, tree_s = 0, gradient_s = 0, interpolation_s = 0, boundary_s = 0;
   double query_s = 0;  // one radius query per particle (inside interpolation_s)
-  double setup_runs = 1;  // processes whose set-up was measured: setup_s and init_s are the median run's
+  double setup_runs = 1;  // processes whose set-up was measured: setup_s and init_s are their median
+  double split_run_setup_s = 0;  // build_world in the run whose parts were timed (the median may be another's)
 
   // Medians over the timed steps [s].
   double step_2t_s = 0, step_1t_s = 0;    // Integrator::step, 2 and 1 threads

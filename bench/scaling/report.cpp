@@ -327,12 +327,18 @@ void write_markdown(const std::string& path, const StudyResult& s, const RbcRela
   md << fmt::format("Every geometry's scene declares `[body.rk] support_shape = \"{}\"`, `particle_order = \"{}\"`, "
                     "`gradient_precision = \"{}\"`.\n\n",
                     s.rk.support_shape, s.rk.particle_order, s.rk.gradient_precision);
-  double setup_runs = 1;
-  for (const auto& r : s.sizes) setup_runs = std::max(setup_runs, r.setup_runs);
-  if (setup_runs > 1)
+  double fewest_runs = HUGE_VAL, most_runs = 0;
+  for (const auto& r : s.sizes)
+    if (ok(r) && r.particles >= Targets{}.setup_exponent_from) {
+      fewest_runs = std::min(fewest_runs, r.setup_runs);
+      most_runs = std::max(most_runs, r.setup_runs);
+    }
+  if (most_runs > 1)
     md << fmt::format("From {} particles on, each size's set-up (build_world and initialize) is the median of {} "
-                      "processes; the parts of build_world are one run's.\n\n",
-                      count(Targets{}.setup_exponent_from), setup_runs);
+                      "processes; the parts of build_world are one run's, and \"other\" is that run's remainder.\n\n",
+                      count(Targets{}.setup_exponent_from),
+                      fewest_runs == most_runs ? fmt::format("{:.0f}", most_runs)
+                                               : fmt::format("{:.0f} to {:.0f}", fewest_runs, most_runs));
   if (largest_n < 0.9e6)
     md << "**A development run: it stops short of 1e6 particles, so the exponent targets are not assessed. "
           "Regenerate with the full command on a quiet machine before quoting these numbers.**\n\n";

@@ -78,25 +78,32 @@ bool read_result(const ChildOutcome& child, SizeResult& r) {
 
 // Replaces r's set-up (build_world and initialize) by the median of s.setup_runs
 // processes, r's own run included; the others only set up (no split, no steps). The
-// parts timed one by one stay r's own.
+// parts timed one by one stay r's own, and so does the build_world they are part of
+// (split_run_setup_s). The median of an even count is the mean of the middle two runs.
 void median_setup(bench::Geometry g, int resolution, const StudySettings& s, SizeResult& r) {
   MeasureSettings setup_only = s.measure;
   setup_only.split = false;
   setup_only.warmup = setup_only.steps = setup_only.steps_1t = 0;
+  r.split_run_setup_s = r.setup_s;
   std::vector<std::pair<double, double>> runs{{r.setup_s, r.init_s}};
   for (int k = 1; k < s.setup_runs; ++k) {
     const ChildOutcome child = run_self(child_arguments(g, resolution, setup_only));
     SizeResult again;
-    if (read_result(child, again) && child.ok && again.status == "ok") runs.emplace_back(again.setup_s, again.init_s);
+    if (read_result(child, again) && child.ok && again.status == "ok")
+      runs.emplace_back(again.setup_s, again.init_s);
+    else
+      fmt::print(stderr, "{} {} particles: a repeated set-up failed ({}); left out of the median\n", r.geometry,
+                 r.particles, child.status);
   }
   std::sort(runs.begin(), runs.end(),
             [](const auto& a, const auto& b) { return a.first + a.second < b.first + b.second; });
-  const auto& median = runs[(runs.size() - 1) / 2];
-  r.setup_s = median.first;
-  r.init_s = median.second;
+  const auto& low = runs[(runs.size() - 1) / 2];
+  const auto& high = runs[runs.size() / 2];
+  r.setup_s = 0.5 * (low.first + high.first);
+  r.init_s = 0.5 * (low.second + high.second);
   r.setup_runs = static_cast<double>(runs.size());
   fmt::print(stderr, "{} {} particles: set-up {} runs, median {:.3f} s\n", r.geometry, r.particles, runs.size(),
-             median.first + median.second);
+             r.setup_s + r.init_s);
 }
 
 }  // namespace

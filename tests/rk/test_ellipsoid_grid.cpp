@@ -224,10 +224,16 @@ TEST(OrientedGrids, KeepEverySupportThatReachesOneOfThePoints) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   CandidateSet by_points, by_reach;
   std::size_t needed = 0, kept_by_points = 0, kept_by_reach = 0;
-  for (std::size_t i = 0; i < cloud.size(); i += cloud.size() / 40) {
-    const Vec3 c = cloud.X[i];
+  // Centres at particles, and (from centres()) between them and outside the cloud, where
+  // a class's box in its frame decides whether its grid is asked at all.
+  std::vector<Vec3> at;
+  for (std::size_t i = 0; i < cloud.size(); i += cloud.size() / 40) at.push_back(cloud.X[i]);
+  for (const Vec3& c : centres(cloud.X, rng, 30)) at.push_back(c);
+  for (std::size_t i = 0; i < at.size(); ++i) {
+    const Vec3 c = at[i];
     // Eight points in a box 0.3 um along the radius and 0.05 um across it.
-    const Vec3 along = c.normalized(), across = along.unitOrthogonal(), third = along.cross(across);
+    const Vec3 along = c.norm() > 0.0 ? Vec3(c.normalized()) : Vec3::UnitZ();
+    const Vec3 across = along.unitOrthogonal(), third = along.cross(across);
     std::vector<Vec3> points;
     for (int k = 0; k < 8; ++k) points.push_back(c + 0.15e-6 * unit(rng) * along + 0.025e-6 * (unit(rng) * across + unit(rng) * third));
     rk.candidates(c, points.data(), points.size(), by_points);
@@ -238,7 +244,7 @@ TEST(OrientedGrids, KeepEverySupportThatReachesOneOfThePoints) {
     for (std::size_t j = 0; j < cloud.size(); ++j)
       for (const Vec3& p : points)
         if (squared_q(supports.metric[j], p - cloud.X[j]) < 1.0) {
-          EXPECT_TRUE(got.count(static_cast<Index>(j))) << "particle " << j << " reaches a point near particle " << i;
+          EXPECT_TRUE(got.count(static_cast<Index>(j))) << "particle " << j << " reaches a point near centre " << i;
           ++needed;
           break;
         }

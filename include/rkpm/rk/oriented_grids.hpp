@@ -8,14 +8,14 @@
 // the coordinate axes, and a needle's axis-aligned spans are nearly its length on every
 // axis: the grid visits about 1,100 particles per query of which about 200 reach, and the
 // finer the wall the more (docs/verification/performance.md, "The set-up"). In a frame
-// whose third axis follows the needles the spans across it are their width, so a grid
+// whose first axis follows the needles the spans across it are their width, so a grid
 // per orientation visits little more than what reaches.
 //
 // How (the constants are in rk/oriented_grids.cpp): the particles are sorted into regions, cubes of kRegionSpans longest semi-axes,
 // and within a region by the direction of their long axis (the eigenvector of G's
 // smallest eigenvalue), without its sign: one of kBinsPerFace^2 cells on each of three
 // faces of a cube of directions. Each non-empty (region, direction) pair is a class with
-// its own grid, in the frame whose third axis is its members' mean long axis, over its
+// its own grid, in the frame whose first axis is its members' mean long axis, over its
 // members' positions and metrics turned into that frame. The regions keep each grid
 // compact (a class spread over the whole wall would get buckets as coarse as its box is
 // sparse; measured: more visits than the single grid). A query turns the centre into the
