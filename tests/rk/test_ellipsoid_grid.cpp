@@ -94,12 +94,28 @@ std::vector<Vec3> centres(const std::vector<Vec3>& X, std::mt19937& rng, int cou
   return out;
 }
 
+// A cloud's ellipsoidal supports (2 spacings), the grid over them and their largest
+// semi-axis: what both checks below query.
+struct GridOfSupports {
+  explicit GridOfSupports(const particles::Cloud& cloud)
+      : supports(ellipsoidal_supports(cloud, 2.0)),
+        grid(cloud.X, entries(supports), supports.radius, supports.min_axis),
+        a_max(*std::max_element(supports.radius.begin(), supports.radius.end())) {}
+  static std::vector<SymmetricEntries> entries(const SupportEllipsoids& s) {
+    std::vector<SymmetricEntries> metric;
+    for (const Mat3& G : s.metric) metric.push_back(symmetric_entries(G));
+    return metric;
+  }
+  SupportEllipsoids supports;
+  EllipsoidGrid grid;
+  double a_max;
+};
+
 void expect_no_particle_missed(const particles::Cloud& cloud, double reach_fraction) {
-  const auto supports = ellipsoidal_supports(cloud, 2.0);
-  std::vector<SymmetricEntries> metric;
-  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
-  const EllipsoidGrid grid(cloud.X, metric, supports.radius, supports.min_axis);
-  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+  const GridOfSupports g(cloud);
+  const auto& supports = g.supports;
+  const EllipsoidGrid& grid = g.grid;
+  const double a_max = g.a_max;
   const double reach = reach_fraction * a_max;
   ASSERT_TRUE(grid.covers(reach));
   std::mt19937 rng(7);
@@ -119,11 +135,10 @@ void expect_no_particle_missed(const particles::Cloud& cloud, double reach_fract
 // As expect_no_particle_missed, for points in a box of half-widths `half` (per axis)
 // around each centre: the query of a cell that is flat along some axes.
 void expect_no_particle_missed_in_box(const particles::Cloud& cloud, const Vec3& half_fraction) {
-  const auto supports = ellipsoidal_supports(cloud, 2.0);
-  std::vector<SymmetricEntries> metric;
-  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
-  const EllipsoidGrid grid(cloud.X, metric, supports.radius, supports.min_axis);
-  const double a_max = *std::max_element(supports.radius.begin(), supports.radius.end());
+  const GridOfSupports g(cloud);
+  const auto& supports = g.supports;
+  const EllipsoidGrid& grid = g.grid;
+  const double a_max = g.a_max;
   const Vec3 half = half_fraction * a_max;
   ASSERT_TRUE(grid.covers(half.maxCoeff()));
   std::mt19937 rng(11);
@@ -178,8 +193,7 @@ TEST(EllipsoidGrid, MissesNoSupportInAJitteredBlock) {
 TEST(OrientedGrids, MissNoNeedleAndTestFewerThanOneGrid) {
   const particles::Cloud cloud = needle_shell();
   const auto supports = ellipsoidal_supports(cloud, 2.0);
-  std::vector<SymmetricEntries> metric;
-  for (const Mat3& G : supports.metric) metric.push_back(symmetric_entries(G));
+  const auto metric = GridOfSupports::entries(supports);
   const OrientedGrids grids(cloud.X, metric, supports.radius, supports.min_axis);
   const EllipsoidGrid one(cloud.X, metric, supports.radius, supports.min_axis);
   ASSERT_GT(grids.classes(), 10u);  // the oriented path, not one class
