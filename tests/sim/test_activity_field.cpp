@@ -138,6 +138,49 @@ TEST(ActivityField, RimActivityAloneUsesItAsTheReferenceAmplitude) {
   }
 }
 
+// zeta_fold adds its own, narrower band with its own layer (here a bending moment, +
+// in the inner half and - in the outer); on the 0.3 um wall with the amplitudes for
+// 0.5 um its bending is scaled by 0.6 like every layer activity's. Alone it is the
+// reference amplitude, in the outer half of the wall by default.
+TEST(ActivityField, FoldBandBendsTheWallOutwardInItsOwnBand) {
+  for (const double thickness : {0.5e-6, 0.3e-6}) {
+    const auto world = rkpm::sim::build_world(rkpm::scene::parse_scene(
+        shell_scene("zeta_rim = 3e3\nzeta_rim_power = 2\nzeta_rim_layer = \"outer\"\nzeta_fold = 2e3\n"
+                    "zeta_fold_power = 16\nzeta_fold_layer = \"bending\"\nzeta_reference_thickness = 0.5e-6",
+                    thickness),
+        "activity.toml"));
+    const auto& body = *world->bodies.front();
+    const auto zeta = zeta_field(body);
+    const double scale = thickness / 0.5e-6;
+    const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
+    int equatorial = 0;
+    for (std::size_t i = 0; i < body.size(); ++i) {
+      const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
+      const double s2 = 1.0 - c * c, fold = 2e3 * std::pow(s2, 8.0);
+      if (body.cloud.surface_mask[i] & outer) {  // outer half: all of the rim, the fold growing it
+        EXPECT_NEAR(zeta[i], 3e3 * s2 * (0.5 + 0.5 * scale) - scale * fold, 1e-9);
+      } else if (body.cloud.surface_mask[i] & inner) {
+        EXPECT_NEAR(zeta[i], 3e3 * s2 * (0.5 - 0.5 * scale) + scale * fold, 1e-9);
+      }
+      if (s2 > 0.99 && (body.cloud.surface_mask[i] & inner)) ++equatorial;
+    }
+    EXPECT_GT(equatorial, 5);  // the band is sampled where it matters
+  }
+  const auto alone = rkpm::sim::build_world(
+      rkpm::scene::parse_scene(shell_scene("zeta_fold = 2e3\nzeta_fold_power = 4"), "activity.toml"));
+  const auto& body = *alone->bodies.front();
+  const auto zeta = zeta_field(body);
+  const auto outer = body.cloud.surface_bit("outer"), inner = body.cloud.surface_bit("inner");
+  double largest = 0.0;
+  for (std::size_t i = 0; i < body.size(); ++i) {
+    const double c = rkpm::materials::lce::material_of(body)->director.h0[i].z();
+    if (body.cloud.surface_mask[i] & outer) EXPECT_NEAR(zeta[i], 2e3 * std::pow(1.0 - c * c, 2.0), 1e-9);
+    if (body.cloud.surface_mask[i] & inner) EXPECT_NEAR(zeta[i], 0.0, 1e-9);
+    largest = std::max(largest, std::abs(zeta[i]));
+  }
+  EXPECT_GT(largest, 1.9e3);  // a field, not the empty "uniform" one
+}
+
 // zeta_reference_thickness: a wall of 0.3 um with the amplitudes given for 0.5 um keeps
 // the mean of each layer factor over the two halves (the in-plane growth) and scales
 // their difference (the bending) by 0.6.

@@ -133,7 +133,7 @@ double rim_thickness_factor(const Settings& settings, const scene::ParamSet& m, 
 
 }  // namespace
 
-// zeta_L = zeta w_face(X_L) w_layer(X_L) + zeta_rim w_rim(X_L):
+// zeta_L = zeta w_face(X_L) w_layer(X_L) + zeta_rim w_rim(X_L) + zeta_fold w_fold(X_L):
 //   w_face  = 1 (uniform), |c|^p (axial), |s|^p (equatorial) or (1 - rho^2)^p (radial),
 //             c = h0 . a and s = sqrt(1 - c^2) for the reference director h0 and axis a;
 //   w_layer = 1 (all), the inner or outer half of a shell's wall, or +1 / -1 in the
@@ -142,7 +142,10 @@ double rim_thickness_factor(const Settings& settings, const scene::ParamSet& m, 
 //   w_rim   = |s|^q: where the wall normal is perpendicular to the axis (a cell's rim),
 //             q = zeta_rim_power, times its own through-the-wall factor (zeta_rim_layer);
 //             zeta_rim times (1 - f) + f (T / T_ref)^3 when zeta_rim_fold_share = f
-//             (rim_thickness_factor).
+//             (rim_thickness_factor);
+//   w_fold  = |s|^k, k = zeta_fold_power, a narrower band times its own through-the-wall
+//             factor (zeta_fold_layer): with "outer" and zeta_fold < 0 the outer half grows
+//             in-plane at the equator and the fold there opens.
 std::vector<double> activity_field(const Settings& settings, const scene::ParamSet& m, const sim::Body& body,
                                    const std::vector<Vec3>& h0, double wall_thickness, double& reference_zeta) {
   const std::string& profile = settings.zeta_profile;
@@ -157,7 +160,9 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
     bending_scale = wall_thickness / settings.zeta_reference_thickness;
   }
   const double zeta_rim = settings.zeta_rim * rim_thickness_factor(settings, m, bending_scale);
-  if (profile == "uniform" && settings.zeta_layer == "all" && zeta_rim == 0.0) return {};
+  const double zeta_fold = settings.zeta_fold;
+  if (reference_zeta == 0.0) reference_zeta = zeta_fold;
+  if (profile == "uniform" && settings.zeta_layer == "all" && zeta_rim == 0.0 && zeta_fold == 0.0) return {};
   if (reference_zeta == 0.0) return {};
 
   const Vec3 axis_raw = settings.zeta_axis;
@@ -181,16 +186,23 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
     for (std::size_t i = 0; i < n; ++i) face[i] = std::pow(1.0 - cos2(i), 0.5 * power);
   }
 
-  std::vector<double> rim(n, 0.0);
-  if (zeta_rim != 0.0) {
-    const double rim_power = settings.zeta_rim_power;
-    for (std::size_t i = 0; i < n; ++i) rim[i] = std::pow(1.0 - cos2(i), 0.5 * rim_power);
-  }
+  // |s|^q, s the sine of the wall normal's angle to the axis: a band at the equator, the
+  // narrower the larger q; zero everywhere when the band's amplitude is.
+  auto equatorial_band = [&](double amplitude, double q) {
+    std::vector<double> band(n, 0.0);
+    if (amplitude != 0.0)
+      for (std::size_t i = 0; i < n; ++i) band[i] = std::pow(1.0 - cos2(i), 0.5 * q);
+    return band;
+  };
+  std::vector<double> rim = equatorial_band(zeta_rim, settings.zeta_rim_power);
+  std::vector<double> fold = equatorial_band(zeta_fold, settings.zeta_fold_power);
   apply_layer(body.cloud, settings.zeta_layer, bending_scale, m, "zeta_layer", face);
   apply_layer(body.cloud, settings.zeta_rim_layer, bending_scale, m, "zeta_rim_layer", rim);
+  if (zeta_fold != 0.0) apply_layer(body.cloud, settings.zeta_fold_layer, bending_scale, m, "zeta_fold_layer", fold);
 
   std::vector<double> activity(n);
-  for (std::size_t i = 0; i < n; ++i) activity[i] = (zeta * face[i] + zeta_rim * rim[i]) / reference_zeta;
+  for (std::size_t i = 0; i < n; ++i)
+    activity[i] = (zeta * face[i] + zeta_rim * rim[i] + zeta_fold * fold[i]) / reference_zeta;
   return activity;
 }
 

@@ -1,7 +1,8 @@
 // The spatial activity field of an active LCE body (seed Eq. 1: sigma_a = -zeta h x h),
 // from the activity settings of its [body.material] table: zeta, zeta_profile,
 // zeta_power, zeta_layer, zeta_axis, zeta_rim, zeta_rim_power, zeta_rim_layer,
-// zeta_reference_thickness and zeta_rim_fold_share.
+// zeta_fold, zeta_fold_power, zeta_fold_layer, zeta_reference_thickness and
+// zeta_rim_fold_share.
 #pragma once
 
 #include "materials/lce/settings.hpp"

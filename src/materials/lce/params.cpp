@@ -96,6 +96,19 @@ const scene::SettingsTable<Settings>& settings_table() {
           .bind(&Settings::zeta_rim_layer,
                 ParamSpec::choice("zeta_rim_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("all"))
                   .help("Through-the-wall profile of the rim activity, as zeta_layer is for zeta."))
+          .bind(&Settings::zeta_fold,
+                ParamSpec::real("zeta_fold", "Pa").defaults(0.0)
+                  .help("A second rim activity, in a narrower band at the equator: zeta_fold |s|^k with "
+                        "k = zeta_fold_power, through the part of the wall that zeta_fold_layer names. With the "
+                        "default layer (outer), zeta_fold < 0 (contractile along the wall normal) grows the outer "
+                        "half of the wall in-plane there and opens a pointed equatorial fold into a rounder rim "
+                        "(docs/verification/rbc.md, the ridge at the equator, measures -3e4 Pa on the RBC scene)."))
+          .bind(&Settings::zeta_fold_power,
+                ParamSpec::real("zeta_fold_power", "-").at_least(0.5).at_most(64).defaults(16.0)
+                  .help("Exponent k of the fold activity profile |s|^k (16: within about 20 degrees of the equator)."))
+          .bind(&Settings::zeta_fold_layer,
+                ParamSpec::choice("zeta_fold_layer", {"all", "inner", "outer", "bending"}).defaults(std::string("outer"))
+                  .help("Through-the-wall profile of the fold activity, as zeta_layer is for zeta."))
           .bind(&Settings::zeta_reference_thickness,
                 ParamSpec::real("zeta_reference_thickness", "m").at_least(0).defaults(0.0)
                   .help("Wall thickness T_ref for which zeta and zeta_rim are given when their layer is inner, outer or "

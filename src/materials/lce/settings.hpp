@@ -23,6 +23,9 @@ struct Settings {
   double zeta_rim = 0.0;                 // [Pa]
   double zeta_rim_power = 2.0;           // [-] q
   std::string zeta_rim_layer = "all";    // all, inner, outer or bending
+  double zeta_fold = 0.0;                // [Pa] a second, narrower band at the rim
+  double zeta_fold_power = 16.0;         // [-]
+  std::string zeta_fold_layer = "outer";  // all, inner, outer or bending
   double zeta_reference_thickness = 0.0; // [m] T_ref; 0 = layer profiles independent of the wall
   double zeta_rim_fold_share = 0.0;      // [-] f: share of zeta_rim that grows as (T / T_ref)^3
   Vec3 zeta_axis = Vec3::UnitZ();        // [-] a (not normalised)
