@@ -198,6 +198,8 @@ std::vector<double> activity_field(const Settings& settings, const scene::ParamS
   std::vector<double> fold = equatorial_band(zeta_fold, settings.zeta_fold_power);
   apply_layer(body.cloud, settings.zeta_layer, bending_scale, m, "zeta_layer", face);
   apply_layer(body.cloud, settings.zeta_rim_layer, bending_scale, m, "zeta_rim_layer", rim);
+  // Only when the band is used: its default layer ("outer") needs a shell, and a scene
+  // without the key must load on any cloud.
   if (zeta_fold != 0.0) apply_layer(body.cloud, settings.zeta_fold_layer, bending_scale, m, "zeta_fold_layer", fold);
 
   std::vector<double> activity(n);
