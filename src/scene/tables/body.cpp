@@ -56,6 +56,11 @@ ParamTable rk_section() {
           .help("Coefficient alpha of the interpolation-residual stabilization, which removes the "
                 "spurious low-energy modes of nodal integration and leaves linear fields and rigid "
                 "motions untouched (see rkpm/rk/stabilization.hpp); 0 = off."),
+      ParamSpec::real("stabilization_reference_thickness", "m").at_least(0).defaults(0.0)
+          .help("Wall thickness T_ref at which `stabilization` is given, for a shell cloud: at the "
+                "cloud's thickness T the coefficient is alpha (T / T_ref)^2, so that with only the "
+                "thickness changed the stabilization keeps its weight against the wall's bending "
+                "stiffness (docs/theory/numerics.md). 0 = alpha at any thickness."),
   };
   return t;
 }

@@ -29,6 +29,21 @@ std::vector<double> shear_moduli(const Body& body) {
   return mu;
 }
 
+// The stabilization coefficient alpha of [body.rk], at the wall's own thickness when it
+// is given for a reference thickness: alpha (T / T_ref)^2 (docs/theory/numerics.md,
+// "Interpolation-residual stabilization").
+double stabilization_coefficient(const scene::BodySpec& spec) {
+  const double alpha = spec.rk.real("stabilization");
+  const double reference = spec.rk.real("stabilization_reference_thickness");
+  if (reference == 0.0) return alpha;
+  const double thickness = clouds::wall_thickness(spec);
+  if (!(thickness > 0.0))
+    throw SetupError(fmt::format("{}:{}: [body.rk] stabilization_reference_thickness = {}: expected a cloud with a "
+                                 "wall thickness (generator = \"shell\"), or 0",
+                                 spec.rk.file(), spec.rk.line("stabilization_reference_thickness"), reference));
+  return alpha * (thickness / reference) * (thickness / reference);
+}
+
 // Shortest mesh edge at each particle: the length scale of the stable time step.
 std::vector<double> shortest_edges(const particles::Cloud& cloud) {
   std::vector<double> h(cloud.size(), INFINITY);
@@ -140,7 +155,7 @@ std::unique_ptr<Body> build_body(const scene::BodySpec& spec, int id, std::uint6
 
   warning = materials::make_material(spec, *body);
   body->stabilization =
-      rk::build_stabilization(cloud.volume, shear_moduli(*body), spec.rk.real("stabilization"));
+      rk::build_stabilization(cloud.volume, shear_moduli(*body), stabilization_coefficient(spec));
   try {
     body->constraints = EssentialBC(body->interpolation, constrained, body->d);
   } catch (const std::runtime_error& e) {
