@@ -316,8 +316,8 @@ TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtTheSeedsThinnerWall) {
 // um; with 0.1: 0.470, RMS 3.93 % of D, D 9.48 um from 10 um (before the middle layer carried half of each
 // half-wall activity, docs/verification/rbc.md: 0.485, 4.26 %, D 9.80 um, the thick wall shrinking
 // least: hence 0.99). Before that fix, without the share (zeta_rim_fold_share = 0) the
-// same shell ended at 0.543, RMS 6.3 %, D 10.16 um: not biconcave. Plain FIRE from the start: through the nested
-// level at face_cells 9 this thick coarse wall ends just outside the criteria (RMS
+// same shell ended at 0.543, RMS 6.3 %, D 10.16 um: not biconcave. Plain FIRE from the start (with 0.1): through
+// the nested level at face_cells 9 this thick coarse wall ends just outside the criteria (RMS
 // 5.06 %, D 9.94 um), where the 30,730-particle scene's levels hold it (docs/verification/rbc.md).
 TEST(RedBloodCell, TheSameDriverHoldsTheDiscAtAThickerWall) {
   const Relaxed r = relax(coarse_scene(kDriver, 0.9, 0.75e-6));

@@ -59,6 +59,24 @@ TEST(StabilizationThickness, ScalesTheCoefficientAsTheSquareOfTheWallThickness) 
   }
 }
 
+TEST(StabilizationThickness, ScalesAThinnerWallDownAsWell) {
+  const auto scaled = weights(shell_scene(0.3e-6, "stabilization = 0.1\nstabilization_reference_thickness = 0.5e-6"));
+  const auto unscaled = weights(shell_scene(0.3e-6, "stabilization = 0.1"));
+  ASSERT_EQ(scaled.size(), unscaled.size());
+  for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_NEAR(scaled[i] / unscaled[i], 0.36, 1e-13) << "particle " << i;
+}
+
+TEST(StabilizationThickness, AReferenceTenTimesOffTheWallIsRefusedAsAUnitSlip) {
+  try {
+    weights(shell_scene(0.5e-6, "stabilization_reference_thickness = 0.5"));
+    FAIL() << "a reference of 0.5 m for a 0.5 um wall was accepted";
+  } catch (const rkpm::sim::SetupError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("stabilization_reference_thickness = 0.5"), std::string::npos) << what;
+    EXPECT_NE(what.find("within a factor 10 of the wall's (5e-07 m)"), std::string::npos) << what;
+  }
+}
+
 TEST(StabilizationThickness, LeavesTheReferenceWallUnchangedBitForBit) {
   EXPECT_EQ(weights(shell_scene(0.5e-6, "stabilization = 0.1\nstabilization_reference_thickness = 0.5e-6")),
             weights(shell_scene(0.5e-6, "stabilization = 0.1")));
@@ -91,7 +109,7 @@ lambda = 1e5
     const std::string what = e.what();
     EXPECT_NE(what.find("block.toml:14"), std::string::npos) << what;
     EXPECT_NE(what.find("stabilization_reference_thickness = 5e-07"), std::string::npos) << what;
-    EXPECT_NE(what.find("shell"), std::string::npos) << what;
+    EXPECT_NE(what.find("generator = \"shell\", not \"block\""), std::string::npos) << what;
   }
 }
 

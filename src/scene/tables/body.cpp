@@ -60,7 +60,7 @@ ParamTable rk_section() {
           .help("Wall thickness T_ref at which `stabilization` is given, for a shell cloud: at the "
                 "cloud's thickness T the coefficient is alpha (T / T_ref)^2, so that with only the "
                 "thickness changed the stabilization keeps its weight against the wall's bending "
-                "stiffness (docs/theory/numerics.md). 0 = alpha at any thickness."),
+                "stiffness (docs/theory/numerics.md). Within a factor 10 of T. 0 = alpha at any thickness."),
   };
   return t;
 }

@@ -31,17 +31,26 @@ std::vector<double> shear_moduli(const Body& body) {
 
 // The stabilization coefficient alpha of [body.rk], at the wall's own thickness when it
 // is given for a reference thickness: alpha (T / T_ref)^2 (docs/theory/numerics.md,
-// "Interpolation-residual stabilization").
+// "Walls of another thickness").
 double stabilization_coefficient(const scene::BodySpec& spec) {
   const double alpha = spec.rk.real("stabilization");
   const double reference = spec.rk.real("stabilization_reference_thickness");
   if (reference == 0.0) return alpha;
   const double thickness = clouds::wall_thickness(spec);
   if (!(thickness > 0.0))
-    throw SetupError(fmt::format("{}:{}: [body.rk] stabilization_reference_thickness = {}: expected a cloud with a "
-                                 "wall thickness (generator = \"shell\"), or 0",
-                                 spec.rk.file(), spec.rk.line("stabilization_reference_thickness"), reference));
-  return alpha * (thickness / reference) * (thickness / reference);
+    throw SetupError(spec.rk.error("stabilization_reference_thickness",
+                                   fmt::format("a cloud with a wall thickness (generator = \"shell\", not \"{}\"), or 0",
+                                               spec.generator()))
+                         .what());
+  // A reference more than ten times off the wall is a unit slip (um for m), which would
+  // switch the stabilization off or make it dominate the wall.
+  const double ratio = thickness / reference;
+  if (ratio < 0.1 || ratio > 10.0)
+    throw SetupError(spec.rk.error("stabilization_reference_thickness",
+                                   fmt::format("a thickness within a factor 10 of the wall's ({:g} m), in metres",
+                                               thickness))
+                         .what());
+  return alpha * ratio * ratio;
 }
 
 // Shortest mesh edge at each particle: the length scale of the stable time step.
