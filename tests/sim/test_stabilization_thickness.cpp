@@ -47,34 +47,41 @@ std::vector<double> weights(const std::string& toml) {
   return sw.world->bodies.front()->stabilization.weight;
 }
 
+// The message of the SetupError that building `toml` raises; "" if it builds.
+std::string setup_error(const std::string& toml, const std::string& name = "test.toml") {
+  try {
+    build_from_text(toml, name);
+  } catch (const rkpm::sim::SetupError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Each scaled weight over the unscaled one at the same particle is `ratio`.
+void expect_ratio(const std::vector<double>& scaled, const std::vector<double>& unscaled, double ratio) {
+  ASSERT_EQ(scaled.size(), unscaled.size());
+  ASSERT_FALSE(scaled.empty());
+  for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_NEAR(scaled[i] / unscaled[i], ratio, 1e-13) << "particle " << i;
+}
+
 TEST(StabilizationThickness, ScalesTheCoefficientAsTheSquareOfTheWallThickness) {
   const auto scaled = weights(shell_scene(0.75e-6, "stabilization = 0.1\nstabilization_reference_thickness = 0.5e-6"));
   const auto given = weights(shell_scene(0.75e-6, "stabilization = 0.225"));
-  const auto unscaled = weights(shell_scene(0.75e-6, "stabilization = 0.1"));
   ASSERT_EQ(scaled.size(), given.size());
-  ASSERT_FALSE(scaled.empty());
-  for (std::size_t i = 0; i < scaled.size(); ++i) {
-    EXPECT_NEAR(scaled[i], given[i], 1e-14 * given[i]) << "particle " << i;
-    EXPECT_NEAR(scaled[i] / unscaled[i], 2.25, 1e-13) << "particle " << i;
-  }
+  for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_NEAR(scaled[i], given[i], 1e-14 * given[i]) << "particle " << i;
+  expect_ratio(scaled, weights(shell_scene(0.75e-6, "stabilization = 0.1")), 2.25);
 }
 
 TEST(StabilizationThickness, ScalesAThinnerWallDownAsWell) {
   const auto scaled = weights(shell_scene(0.3e-6, "stabilization = 0.1\nstabilization_reference_thickness = 0.5e-6"));
-  const auto unscaled = weights(shell_scene(0.3e-6, "stabilization = 0.1"));
-  ASSERT_EQ(scaled.size(), unscaled.size());
-  for (std::size_t i = 0; i < scaled.size(); ++i) EXPECT_NEAR(scaled[i] / unscaled[i], 0.36, 1e-13) << "particle " << i;
+  expect_ratio(scaled, weights(shell_scene(0.3e-6, "stabilization = 0.1")), 0.36);
 }
 
 TEST(StabilizationThickness, AReferenceTenTimesOffTheWallIsRefusedAsAUnitSlip) {
-  try {
-    weights(shell_scene(0.5e-6, "stabilization_reference_thickness = 0.5"));
-    FAIL() << "a reference of 0.5 m for a 0.5 um wall was accepted";
-  } catch (const rkpm::sim::SetupError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("stabilization_reference_thickness = 0.5"), std::string::npos) << what;
-    EXPECT_NE(what.find("within a factor 10 of the wall's (5e-07 m)"), std::string::npos) << what;
-  }
+  const std::string what = setup_error(shell_scene(0.5e-6, "stabilization_reference_thickness = 0.5"));
+  ASSERT_FALSE(what.empty()) << "a reference of 0.5 m for a 0.5 um wall was accepted";
+  EXPECT_NE(what.find("stabilization_reference_thickness = 0.5"), std::string::npos) << what;
+  EXPECT_NE(what.find("within a factor 10 of the wall's (5e-07 m)"), std::string::npos) << what;
 }
 
 TEST(StabilizationThickness, LeavesTheReferenceWallUnchangedBitForBit) {
@@ -102,15 +109,11 @@ model = "neo_hookean"
 mu = 1e4
 lambda = 1e5
 )";
-  try {
-    build_from_text(block, "block.toml");
-    FAIL() << "a block accepted stabilization_reference_thickness";
-  } catch (const rkpm::sim::SetupError& e) {
-    const std::string what = e.what();
-    EXPECT_NE(what.find("block.toml:14"), std::string::npos) << what;
-    EXPECT_NE(what.find("stabilization_reference_thickness = 5e-07"), std::string::npos) << what;
-    EXPECT_NE(what.find("generator = \"shell\", not \"block\""), std::string::npos) << what;
-  }
+  const std::string what = setup_error(block, "block.toml");
+  ASSERT_FALSE(what.empty()) << "a block accepted stabilization_reference_thickness";
+  EXPECT_NE(what.find("block.toml:14"), std::string::npos) << what;
+  EXPECT_NE(what.find("stabilization_reference_thickness = 5e-07"), std::string::npos) << what;
+  EXPECT_NE(what.find("generator = \"shell\", not \"block\""), std::string::npos) << what;
 }
 
 }  // namespace
