@@ -1,5 +1,6 @@
 #include "terms/contact/contact.hpp"
 #include "terms/contact/holding.hpp"
+#include "terms/contact/surface_contact.hpp"
 
 #include "terms/catalog.hpp"
 #include "terms/term_support.hpp"
@@ -61,7 +62,8 @@ std::vector<double> molecules_of(const Body& body, double beta) {
 
 Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& comm)
     : a_(a), b_(b), comm_(comm), lj_{s.epsilon, s.s0}, cutoff_(s.cutoff), energy_shift_(lj_.energy(s.cutoff)),
-      pairs_(s.cutoff, s.skin, {}, false), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1), s0_(s.s0) {
+      pairs_(s.cutoff, s.skin, {}, false), law_(s.law), substrate_(s.substrate == a.name ? 0 : 1),
+      log_(a, b, s, comm), s0_(s.s0) {
   if (&a == &b) throw std::invalid_argument("contact: the two bodies must be different (got '" + a.name + "' twice)");
   molecules_[0] = molecules_of(a, s.beta[0]);
   molecules_[1] = molecules_of(b, s.beta[1]);
@@ -74,10 +76,6 @@ Contact::Contact(Body& a, Body& b, const ContactSettings& s, const par::Comm& co
   }
   force_[0].assign(a.size(), Vec3::Zero());
   force_[1].assign(b.size(), Vec3::Zero());
-  if (!s.report_surface.empty()) {
-    // Gaps are searched up to 4 cutoffs: beyond, the bodies do not interact anyway.
-    report_.emplace(a, b, s.report_surface, s.contact_gap > 0.0 ? s.contact_gap : s.s0, 4.0 * s.cutoff, comm);
-  }
   if (!b.distributed())
     for (Index j = 0; j < static_cast<Index>(b.size()); ++j) columns_.push_back(j);
   if (!a.cloud.boundary_faces.empty() && !b.cloud.boundary_faces.empty()) {
@@ -95,36 +93,10 @@ std::string Contact::diagnose(const World& world) {
     const ContactSample s = overlap_[k]->measure();
     if (s.deepest < 0 || s.min_gap >= -0.5 * s0_ || !overlap_[k]->encloses(s.deepest_position)) continue;
     const Body& inside = *bodies[k];
-    const Index i = s.deepest;
-    const std::int64_t id = one_rank_id(inside, i);
-    const Vec3& X = inside.cloud.X[i];
-    const Vec3& x = s.deepest_position;
-    if (world.step == 0)
-      return fmt::format(
-          "body '{}' starts inside body '{}': its particle {} at ({:.4g}, {:.4g}, {:.4g}) m lies {:.4g} m inside "
-          "its surface (more than s0/2 = {:.4g} m). Place the bodies apart ([body.cloud] of each).",
-          inside.name, bodies[1 - k]->name, id, x.x(), x.y(), x.z(), -s.min_gap, 0.5 * s0_);
-    return fmt::format(
-        "body '{}' has passed through the surface of body '{}': its particle {} (reference position ({:.4g}, "
-        "{:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m) lies {:.4g} m inside it (more than s0/2 = {:.4g} m). "
-        "The contact law (s0 = {:.4g} m) did not keep the bodies apart: their surface particles are too far apart "
-        "for s0 where they met, or the load exceeded what the potential can bear; a finer cloud or a larger s0 "
-        "holds them (docs/theory/contact.md).",
-        inside.name, bodies[1 - k]->name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), -s.min_gap, 0.5 * s0_,
-        s0_);
+    return interpenetration_message(world.step, inside, *bodies[1 - k], one_rank_id(inside, s.deepest),
+                                    inside.cloud.X[s.deepest], s.deepest_position, -s.min_gap, s0_);
   }
   return {};
-}
-
-ContactSample Contact::sample() const {
-  const ContactSample s = report_->measure();  // physical positions of the present state
-  if (!first_sample_) {
-    first_sample_ = s;
-    smallest_gap_ = s.min_gap;
-  }
-  smallest_gap_ = std::min(smallest_gap_, s.min_gap);
-  last_sample_ = s;
-  return s;
 }
 
 void Contact::choose_partner_ghosts() {
@@ -302,45 +274,12 @@ void Contact::report(const World&, io::Json& summary) const {
   if (law_ == StiffnessLaw::linear) j.set("stiffness_reference", mu_reference_);
   j.set("force_evaluations", evaluations_);
   j.set("seconds", seconds_);  // wall time of add_forces: compare with the run's wall_time
-  if (report_ && last_sample_) {
-    auto vec = [](const Vec3& v) {
-      io::Json a = io::Json::array();
-      for (int k = 0; k < 3; ++k) a.push_back(v[k]);
-      return a;
-    };
-    io::Json r = io::Json::object();
-    r.set("surface", report_->surface());
-    r.set("contact_gap", report_->contact_gap());
-    r.set("centroid_initial", vec(first_sample_->centroid));
-    r.set("centroid", vec(last_sample_->centroid));
-    r.set("drift", vec(last_sample_->centroid - first_sample_->centroid));
-    r.set("min_gap", last_sample_->min_gap);
-    r.set("min_gap_over_frames", smallest_gap_);
-    r.set("contact_radius", last_sample_->contact_radius);
-    r.set("contact_particles", last_sample_->contact_particles);
-    j.set("report", r);
-  }
+  log_.add_to(j);
   summary.set("contact " + a_.name + " " + b_.name, j);
 }
 
 std::vector<materials::OutputField> Contact::output_fields(const Body& body) const {
-  const int k = &body == &a_ ? 0 : &body == &b_ ? 1 : -1;
-  if (k < 0) return {};
-  const Body& other = k == 0 ? b_ : a_;
-  const std::vector<Vec3>& f = force_[static_cast<std::size_t>(k)];
-  return {{"contact_force_" + other.name, 3, f.empty() ? nullptr : f.front().data()}};
-}
-
-std::vector<std::string> Contact::history_columns() const {
-  if (!has_report()) return {};
-  return {"centroid_x", "centroid_y", "centroid_z", "min_gap", "contact_radius", "contact_particles"};
-}
-
-std::string Contact::history_values(const World&) const {
-  if (!has_report()) return {};
-  const ContactSample s = sample();
-  return fmt::format(",{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{}", s.centroid.x(), s.centroid.y(), s.centroid.z(),
-                     s.min_gap, s.contact_radius, s.contact_particles);
+  return contact_force_fields(body, a_, b_, force_);
 }
 
 }  // namespace rkpm::sim
@@ -377,6 +316,12 @@ std::unique_ptr<sim::Term> build(const scene::ParamSet& params, sim::World& worl
   const sim::ContactSettings s = settings_table().read(params);
   sim::Body& a = named_body(world, params, s.bodies[0]);
   sim::Body& b = named_body(world, params, s.bodies[1]);
+  // The surface formulation meets a faceted surface, with no gaps between particles to
+  // fall through: the hollow check is the pair sum's.
+  if (s.formulation == sim::ContactFormulation::surface)
+    return constructed(params, [&]() -> std::unique_ptr<sim::Term> {
+      return std::make_unique<sim::SurfaceContact>(a, b, s, *world.comm);
+    });
   check_holding(params, s, a, b);
   return constructed(params,
                      [&]() -> std::unique_ptr<sim::Term> { return std::make_unique<sim::Contact>(a, b, s, *world.comm); });

@@ -92,8 +92,8 @@ class Contact final : public Term {
   // closed surface (nearest face's side, confirmed by the winding number) means the law
   // did not hold the clouds apart. The diagnosis names the particle and its depth.
   std::string diagnose(const World&) override;
-  std::vector<std::string> history_columns() const override;
-  std::string history_values(const World&) const override;
+  std::vector<std::string> history_columns() const override { return log_.history_columns(); }
+  std::string history_values(const World&) const override { return log_.history_values(); }
   // Frames show each particle's contact force (force_on) as "contact_force_<other
   // body>": summed over a patch of the surface and divided by its area, the traction.
   std::vector<materials::OutputField> output_fields(const Body& body) const override;
@@ -112,8 +112,8 @@ class Contact final : public Term {
   // The declared report (report_surface): measures the present state and keeps the
   // first sample and the smallest gap over all samples for the summary. Null report:
   // has_report() is false and sample() must not be called.
-  bool has_report() const { return report_.has_value(); }
-  ContactSample sample() const;
+  bool has_report() const { return log_.declared(); }
+  ContactSample sample() const { return log_.sample(); }
   // Wall time spent in add_forces since construction [s] (the cost of the term).
   double seconds() const { return seconds_; }
 
@@ -142,14 +142,12 @@ class Contact final : public Term {
   std::size_t active_pairs_ = 0;
   StiffnessLaw law_;
   int substrate_;
-  std::optional<ContactReport> report_;
+  ContactReportLog log_;
   // Each body's boundary particles against the other's whole surface (diagnose); absent
   // for bodies without faces (clouds made in tests).
   std::array<std::optional<ContactReport>, 2> overlap_;
   double s0_;
   std::size_t diagnosed_builds_ = 0;
-  mutable std::optional<ContactSample> first_sample_, last_sample_;
-  mutable double smallest_gap_ = 0.0;
   std::size_t evaluations_ = 0;
   double seconds_ = 0.0;
 };

@@ -4,6 +4,8 @@
 
 #include "rkpm/rk/neighbor_search.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -146,6 +148,82 @@ bool ContactReport::encloses(const Vec3& p) const {
     solid_angle += 2.0 * std::atan2(numerator, denominator);
   }
   return std::abs(solid_angle) > 2.0 * M_PI;
+}
+
+ContactReportLog::ContactReportLog(const Body& cell, const Body& substrate, const ContactSettings& s,
+                                   const par::Comm& comm) {
+  // Gaps are searched up to 4 cutoffs: beyond, the bodies do not interact anyway.
+  if (!s.report_surface.empty())
+    report_.emplace(cell, substrate, s.report_surface, s.contact_gap > 0.0 ? s.contact_gap : s.s0, 4.0 * s.cutoff,
+                    comm);
+}
+
+ContactSample ContactReportLog::sample() const {
+  const ContactSample s = report_->measure();  // physical positions of the present state
+  if (!first_sample_) {
+    first_sample_ = s;
+    smallest_gap_ = s.min_gap;
+  }
+  smallest_gap_ = std::min(smallest_gap_, s.min_gap);
+  last_sample_ = s;
+  return s;
+}
+
+std::vector<std::string> ContactReportLog::history_columns() const {
+  if (!declared()) return {};
+  return {"centroid_x", "centroid_y", "centroid_z", "min_gap", "contact_radius", "contact_particles"};
+}
+
+std::string ContactReportLog::history_values() const {
+  if (!declared()) return {};
+  const ContactSample s = sample();
+  return fmt::format(",{:.10g},{:.10g},{:.10g},{:.6g},{:.6g},{}", s.centroid.x(), s.centroid.y(), s.centroid.z(),
+                     s.min_gap, s.contact_radius, s.contact_particles);
+}
+
+void ContactReportLog::add_to(io::Json& term_summary) const {
+  if (!report_ || !last_sample_) return;
+  auto vec = [](const Vec3& v) {
+    io::Json a = io::Json::array();
+    for (int k = 0; k < 3; ++k) a.push_back(v[k]);
+    return a;
+  };
+  io::Json r = io::Json::object();
+  r.set("surface", report_->surface());
+  r.set("contact_gap", report_->contact_gap());
+  r.set("centroid_initial", vec(first_sample_->centroid));
+  r.set("centroid", vec(last_sample_->centroid));
+  r.set("drift", vec(last_sample_->centroid - first_sample_->centroid));
+  r.set("min_gap", last_sample_->min_gap);
+  r.set("min_gap_over_frames", smallest_gap_);
+  r.set("contact_radius", last_sample_->contact_radius);
+  r.set("contact_particles", last_sample_->contact_particles);
+  term_summary.set("report", r);
+}
+
+std::vector<materials::OutputField> contact_force_fields(const Body& body, const Body& a, const Body& b,
+                                                         const std::array<std::vector<Vec3>, 2>& force) {
+  const int k = &body == &a ? 0 : &body == &b ? 1 : -1;
+  if (k < 0) return {};
+  const Body& other = k == 0 ? b : a;
+  const std::vector<Vec3>& f = force[static_cast<std::size_t>(k)];
+  return {{"contact_force_" + other.name, 3, f.empty() ? nullptr : f.front().data()}};
+}
+
+std::string interpenetration_message(std::int64_t step, const Body& inside, const Body& other, std::int64_t id,
+                                     const Vec3& X, const Vec3& x, double depth, double s0) {
+  if (step == 0)
+    return fmt::format(
+        "body '{}' starts inside body '{}': its particle {} at ({:.4g}, {:.4g}, {:.4g}) m lies {:.4g} m inside "
+        "its surface (more than s0/2 = {:.4g} m). Place the bodies apart ([body.cloud] of each).",
+        inside.name, other.name, id, x.x(), x.y(), x.z(), depth, 0.5 * s0);
+  return fmt::format(
+      "body '{}' has passed through the surface of body '{}': its particle {} (reference position ({:.4g}, "
+      "{:.4g}, {:.4g}) m, current ({:.4g}, {:.4g}, {:.4g}) m) lies {:.4g} m inside it (more than s0/2 = {:.4g} m). "
+      "The contact law (s0 = {:.4g} m) did not keep the bodies apart: their surface particles are too far apart "
+      "for s0 where they met, or the load exceeded what the potential can bear; a finer cloud or a larger s0 "
+      "holds them (docs/theory/contact.md).",
+      inside.name, other.name, id, X.x(), X.y(), X.z(), x.x(), x.y(), x.z(), depth, 0.5 * s0, s0);
 }
 
 }  // namespace rkpm::sim

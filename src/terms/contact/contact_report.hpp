@@ -18,11 +18,14 @@
 //     the plane normal to the mean normal of their nearest faces.
 #pragma once
 
+#include "terms/contact/settings.hpp"
+#include "rkpm/io/json.hpp"
 #include "rkpm/par/shared_particles.hpp"
 #include "rkpm/sim/body.hpp"
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,5 +69,36 @@ class ContactReport {
   par::SharedParticles shared_corners_, shared_cell_;  // distributed: gathered to every rank
   mutable std::vector<Vec3> corner_positions_;         // physical, at the last measure()
 };
+
+// A contact term's report over a run (its `report_surface` key, either formulation):
+// samples the present state for history.csv and keeps the first sample and the
+// smallest gap for the summary. Without the key nothing is measured.
+class ContactReportLog {
+ public:
+  ContactReportLog(const Body& cell, const Body& substrate, const ContactSettings& settings, const par::Comm& comm);
+  bool declared() const { return report_.has_value(); }
+  // Measures the present state (collective when distributed); declared() must hold.
+  ContactSample sample() const;
+  std::vector<std::string> history_columns() const;
+  std::string history_values() const;
+  // The "report" object of the term's summary (nothing before the first sample).
+  void add_to(io::Json& term_summary) const;
+
+ private:
+  std::optional<ContactReport> report_;
+  mutable std::optional<ContactSample> first_sample_, last_sample_;
+  mutable double smallest_gap_ = 0.0;
+};
+
+// A contact term's output fields for `body`: "contact_force_<other body>", the forces
+// on the physical points of a (force[0]) or of b (force[1]); none for another body.
+std::vector<materials::OutputField> contact_force_fields(const Body& body, const Body& a, const Body& b,
+                                                         const std::array<std::vector<Vec3>, 2>& force);
+
+// The diagnosis of a boundary particle found `depth` inside the other body's surface
+// (more than s0/2): at step 0 the scene placed the bodies overlapping, later the
+// contact law did not hold them apart.
+std::string interpenetration_message(std::int64_t step, const Body& inside, const Body& other, std::int64_t id,
+                                     const Vec3& reference, const Vec3& current, double depth, double s0);
 
 }  // namespace rkpm::sim

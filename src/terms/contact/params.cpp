@@ -78,6 +78,17 @@ const scene::SettingsTable<ContactSettings>& settings_table() {
                 ParamSpec::real("contact_gap", "m").at_least(0).defaults(0.0)
                     .help("Report: particles of the first body closer than this to the surface form the contact "
                           "patch; 0 = s0."))
+          .bind(&ContactSettings::formulation,
+                ParamSpec::choice("formulation", {"pairs", "surface"}).defaults(std::string("pairs"))
+                    .help("How Eq. 14's double volume integral is evaluated. pairs: the seed's nodal quadrature, a "
+                          "sum over particle pairs of both bodies; its depth sum is coarse where the particle layers "
+                          "are not much finer than s0 (docs/verification/adhesion.md). surface: the depth integrals "
+                          "in closed form for locally flat surfaces (the traction law of two half-spaces), summed "
+                          "over the first body's boundary particles at their gaps to the second body's surface "
+                          "(Sauer & De Lorenzis 2013); one rank only (docs/theory/contact.md)."),
+                [](const std::string& f) {
+                  return f == "surface" ? sim::ContactFormulation::surface : sim::ContactFormulation::pairs;
+                })
           .finish(finish_contact);
   return table;
 }

@@ -10,6 +10,9 @@
 namespace rkpm::sim {
 
 enum class StiffnessLaw { none, linear };
+// pairs: seed Eq. 14 by nodal quadrature over both volumes (contact.hpp); surface: its
+// depth integrals in closed form, over the first body's surface (surface_contact.hpp).
+enum class ContactFormulation { pairs, surface };
 
 struct ContactSettings {
   std::vector<std::string> bodies;      // the two bodies, by name (the term acts between them)
@@ -23,6 +26,7 @@ struct ContactSettings {
   double stiffness_reference = 0.0;     // mu_ref [Pa]; 0: volume-weighted mean over the substrate
   std::string report_surface;           // surface of body B for the gap report (contact_report.hpp); empty: none
   double contact_gap = 0.0;             // patch threshold of the report [m]; 0: s0
+  ContactFormulation formulation = ContactFormulation::pairs;
 };
 
 }  // namespace rkpm::sim
