@@ -104,6 +104,7 @@ SurfaceContact::SurfaceContact(Body& a, Body& b, const ContactSettings& s, const
   }
   points_a_.resize(a.size());
   points_b_.resize(b.size());
+  corner_normals_.resize(b.size());
   force_[0].assign(a.size(), Vec3::Zero());
   force_[1].assign(b.size(), Vec3::Zero());
   feet_.resize(surface_.size());
@@ -132,6 +133,22 @@ void SurfaceContact::find_feet() {
     centres_[f] = centre / corners;
     for (int k = 0; k < corners; ++k) reach = std::max(reach, (points_b_[face[k]] - centres_[f]).norm());
   }
+  // Each corner's normal: the area-weighted mean of its faces' (a quadrilateral's as the
+  // sum of its four triangles about the centre).
+  for (const Index c : corners_) corner_normals_[c].setZero();
+  for (std::size_t f = 0; f < faces_.size(); ++f) {
+    const auto& face = faces_[f];
+    const int corners = face[3] >= 0 ? 4 : 3;
+    Vec3 area = Vec3::Zero();
+    if (corners == 4) {
+      for (int k = 0; k < 4; ++k)
+        area += (points_b_[face[k]] - centres_[f]).cross(points_b_[face[(k + 1) % 4]] - centres_[f]);
+    } else {
+      area = (points_b_[face[1]] - points_b_[face[0]]).cross(points_b_[face[2]] - points_b_[face[0]]);
+    }
+    for (int k = 0; k < corners; ++k) corner_normals_[face[k]] += area;
+  }
+  for (const Index c : corners_) corner_normals_[c].normalize();
   const rk::NeighborSearch search(centres_);
   const double rc = law_.cutoff();
   const auto n = static_cast<Index>(surface_.size());
@@ -171,7 +188,11 @@ void SurfaceContact::find_feet() {
             foot.weight = {w[0], w[1], w[2], 0.0};
           }
           foot.gap = side * distance;
-          foot.direction = distance > 0.0 ? Vec3(side * (x - q) / distance) : normal;
+          // The corners' normals interpolated at the nearest point: continuous across
+          // the facets' edges, where the distance's own gradient turns by their angle.
+          Vec3 smooth = Vec3::Zero();
+          for (int c = 0; c < corners; ++c) smooth += foot.weight[c] * corner_normals_[face[c]];
+          foot.direction = smooth.normalized();
         }
       }
       if (foot.face >= 0) foot.scale = area_[i] * density_product_ * factor_at(foot, surface_[i]);

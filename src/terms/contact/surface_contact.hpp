@@ -17,12 +17,18 @@
 // the mean of its corners, so that no diagonal biases the surface sideways when it
 // bends) and w_a the stiffness law's factor: the
 // substrate's mu / mu_ref at the nearest point (interpolated in the face) or at a,
-// whichever body the substrate is. The force on a's point is -dPi/dx_a =
-// c_a sigma(g_a) e_a, e_a the unit gradient of the signed distance; the triangle's
-// corners take the opposite force in the weights of the nearest point
-// (the distance's gradient with respect to them), so momentum balances. The factor's
-// own change as the nearest point slides is left out of the force (it is smooth in
-// the substrate and small over a step). Below g_min = s0 / 4 the energy is continued
+// whichever body the substrate is. The force on a's point is c_a sigma(g_a) e_a, and
+// the face's corners take the opposite force in the weights of the nearest point, so
+// momentum balances. e_a is the corners' normals (area-weighted means of their faces')
+// interpolated at the nearest point. On a flat face it is the unit gradient of the
+// distance and the forces are exactly -dPi/dx (the corners' share is the distance's
+// gradient with respect to them); where the faces meet at an angle it differs from
+// that gradient by the angle, but it turns continuously across their edges, where the
+// gradient jumps: a particle over the valley between two facets of a bent substrate
+// then feels no force that flips with its side, which held relaxations at a residual
+// of 2e-5 with the gradient's direction (docs/verification/adhesion.md). The factor's
+// own change as the nearest point slides is left out of the force (it is smooth in the
+// substrate and small over a step). Below g_min = s0 / 4 the energy is continued
 // linearly, with the traction of g_min: a particle pressed that far has failed, and
 // `diagnose` stops the run once it is s0 / 2 inside.
 //
@@ -91,6 +97,7 @@ class SurfaceContact final : public Term {
   std::vector<Index> corners_;                   // their particles, increasing
   std::vector<Vec3> points_a_, points_b_;        // physical points (indexed by particle)
   std::vector<Vec3> centres_;                    // face centres at the last evaluation
+  std::vector<Vec3> corner_normals_;             // unit normals at the faces' corners (by particle)
   std::vector<Foot> feet_;                       // per entry of surface_
   std::array<std::vector<Vec3>, 2> force_;       // on the physical points, by particle
   rk::RowScatter scatter_a_, scatter_b_;
