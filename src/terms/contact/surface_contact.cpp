@@ -120,6 +120,20 @@ double SurfaceContact::factor_at(const Foot& foot, Index a_particle) const {
   return factor;
 }
 
+Vec3 SurfaceContact::factor_gradient(const Vec3& p0, const Vec3& p1, const Vec3& p2, const std::array<Index, 4>& face,
+                                     int k, int k1, int corners) const {
+  const auto& f = stiffness_factor_[1];
+  if (f.empty()) return Vec3::Zero();
+  // The factor at the triangle's corners: two of the face's and, on a quadrilateral,
+  // its centre (the corners' mean), or the triangle's third.
+  double third = f[face[2]];
+  if (corners == 4) third = 0.25 * (f[face[0]] + f[face[1]] + f[face[2]] + f[face[3]]);
+  const double f0 = f[face[k]], f1 = f[face[k1]];
+  // grad of the linear interpolant in the plane: [(f1 - f0)(e2 x n) + (f2 - f0)(n x e1)] / |n|^2.
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0, n = e1.cross(e2);
+  return ((f1 - f0) * e2.cross(n) + (third - f0) * n.cross(e1)) / n.squaredNorm();
+}
+
 void SurfaceContact::find_feet() {
   physical_points(a_, surface_, points_a_);
   physical_points(b_, corners_, points_b_);
@@ -188,6 +202,7 @@ void SurfaceContact::find_feet() {
             foot.weight = {w[0], w[1], w[2], 0.0};
           }
           foot.gap = side * distance;
+          foot.scale_gradient = factor_gradient(p0, p1, p2, face, k, k1, corners);
           // The corners' normals interpolated at the nearest point: continuous across
           // the facets' edges, where the distance's own gradient turns by their angle.
           Vec3 smooth = Vec3::Zero();
@@ -195,7 +210,10 @@ void SurfaceContact::find_feet() {
           foot.direction = smooth.normalized();
         }
       }
-      if (foot.face >= 0) foot.scale = area_[i] * density_product_ * factor_at(foot, surface_[i]);
+      if (foot.face >= 0) {
+        foot.scale = area_[i] * density_product_ * factor_at(foot, surface_[i]);
+        foot.scale_gradient *= area_[i] * density_product_;
+      }
       feet_[i] = foot;
     }
   }
@@ -221,7 +239,7 @@ void SurfaceContact::add_forces(World&) {
     const double w = g >= g_min ? law_.energy(g) : floor_energy + floor_traction * (g_min - g);
     const double sigma = g >= g_min ? law_.traction(g) : floor_traction;
     energy += foot.scale * w;
-    f = (foot.scale * sigma) * foot.direction;
+    f = (foot.scale * sigma) * foot.direction - w * foot.scale_gradient;
     const auto& face = faces_[foot.face];
     for (int k = 0; k < 4; ++k)
       if (face[k] >= 0) force_[1][face[k]] -= foot.weight[k] * f;

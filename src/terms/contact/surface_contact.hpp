@@ -26,9 +26,11 @@
 // that gradient by the angle, but it turns continuously across their edges, where the
 // gradient jumps: a particle over the valley between two facets of a bent substrate
 // then feels no force that flips with its side, which held relaxations at a residual
-// of 2e-5 with the gradient's direction (docs/verification/adhesion.md). The factor's
-// own change as the nearest point slides is left out of the force (it is smooth in the
-// substrate and small over a step). Below g_min = s0 / 4 the energy is continued
+// of 2e-5 with the gradient's direction (docs/verification/adhesion.md). Under the
+// stiffness law on the second body, w_a changes as the nearest point slides along the
+// face: that adds -A_a beta1 beta2 W(g_a) grad w (w linear in each triangle, the
+// gradient in its plane), the pull toward stronger adhesion that drives durotaxis
+// (seed section 4.3); the corners take it back in the same weights. Below g_min = s0 / 4 the energy is continued
 // linearly, with the traction of g_min: a particle pressed that far has failed, and
 // `diagnose` stops the run once it is s0 / 2 inside.
 //
@@ -78,11 +80,17 @@ class SurfaceContact final : public Term {
     int face = -1;                      // -1: no face within the cutoff
     std::array<double, 4> weight{};     // the nearest point's weights on the face's corners
     double gap = 0.0;                   // signed distance [m]
-    Vec3 direction = Vec3::Zero();      // unit gradient of the signed distance in x_a
+    Vec3 direction = Vec3::Zero();      // the corners' normals interpolated at the nearest point
     double scale = 0.0;                 // c_a = A_a beta1 beta2 w_a [1/m^4]
+    Vec3 scale_gradient = Vec3::Zero(); // A_a beta1 beta2 times the gradient of w along the face [1/m^5]
   };
   void find_feet();
   double factor_at(const Foot& foot, Index a_particle) const;
+  // The gradient of the second body's stiffness factor along triangle (p0, p1, p2): face
+  // corners k and k1 and the centre (a quadrilateral) or corner 2 (a triangle); zero
+  // without the law on the second body.
+  Vec3 factor_gradient(const Vec3& p0, const Vec3& p1, const Vec3& p2, const std::array<Index, 4>& face, int k,
+                       int k1, int corners) const;
   double spring(const Foot& foot) const;  // k_a [N/m]
 
   Body& a_;

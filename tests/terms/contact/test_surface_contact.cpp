@@ -96,7 +96,13 @@ TEST(SurfaceLaw, FarCutoffGivesTheClosedFormsOfTheUntruncatedPotential) {
 // Two blocks of neo-Hookean material, the first above the second at gap D: the
 // second extends more than a cutoff beyond the first on every side, so each particle of
 // the first body's bottom face sees a half-space.
-std::string two_blocks(double gap) {
+// With `graded`, the second block's moduli grow along x (seed Eq. 18) and the term's
+// linear stiffness law takes eps from them.
+std::string two_blocks(double gap, bool graded = false) {
+  const std::string lower_material = graded ? "model = \"mooney_rivlin\"\nc1 = 4e4\nc2 = 1e4\nlambda = 4e5\n"
+                                              "grade_axis = \"x\"\ngrade_a = 4.0\ngrade_b = 0.5"
+                                            : "model = \"neo_hookean\"\nmu = 1e5\nlambda = 4e5";
+  const std::string law = graded ? "stiffness_law = \"linear\"\nsubstrate = \"lower\"" : "";
   return fmt::format(R"([scene]
 name = "surface_contact"
 [integrator]
@@ -122,9 +128,7 @@ origin = [-3e-6, -3e-6, -2e-6]
 size = [10e-6, 10e-6, 2e-6]
 cells = [20, 20, 4]
 [body.material]
-model = "neo_hookean"
-mu = 1e5
-lambda = 4e5
+{lower_material}
 [[term]]
 type = "contact"
 bodies = ["upper", "lower"]
@@ -132,8 +136,9 @@ s0 = 0.75e-6
 epsilon = 3.265e-15
 beta = [1e18, 2e18]
 formulation = "surface"
+{law}
 )",
-                     fmt::arg("gap", gap));
+                     fmt::arg("gap", gap), fmt::arg("lower_material", lower_material), fmt::arg("law", law));
 }
 
 Vec3 total(const std::vector<Vec3>& forces) {
@@ -191,8 +196,10 @@ TEST(SurfaceContact, FlatBlocksFeelTheHalfSpaceTractionAndBalance) {
 // (its top face stays flat, where the forces are the energy's exact gradient): the
 // change of the energy against the work of the term's generalized forces (central
 // differences).
-TEST(SurfaceContact, ForcesAreTheGradientOfTheEnergyOverAFlatFace) {
-  auto w = testing::world_from_text(two_blocks(0.6e-6));
+// Without the stiffness law, and with it on a graded second body, where the pull along
+// the face toward stronger adhesion (the gradient of eps) is part of the forces.
+void check_gradient(bool graded) {
+  auto w = testing::world_from_text(two_blocks(0.6e-6, graded));
   World& world = *w.world;
   testing::Random random(7);
   std::vector<std::vector<Vec3>> direction;
@@ -226,9 +233,26 @@ TEST(SurfaceContact, ForcesAreTheGradientOfTheEnergyOverAFlatFace) {
     set(t0 - dt);
     const double em = evaluate(world);
     const double slope = (ep - em) / (2.0 * dt);
-    std::printf("t = %.1e m: dE/dt %.10e, -work %.10e\n", t0, slope, -work);
+    std::printf("%s, t = %.1e m: dE/dt %.10e, -work %.10e\n", graded ? "graded" : "uniform", t0, slope, -work);
     EXPECT_NEAR(slope, -work, 1e-6 * std::abs(work));
   }
+}
+
+TEST(SurfaceContact, ForcesAreTheGradientOfTheEnergyOverAFlatFace) { check_gradient(false); }
+
+TEST(SurfaceContact, ForcesAreTheGradientOfTheEnergyUnderTheStiffnessLaw) { check_gradient(true); }
+
+// On the graded block the lateral force on the first body points up the gradient of
+// eps (toward the stiffer side, +x): the pull that moves a cell in durotaxis.
+TEST(SurfaceContact, StiffnessLawPullsTowardStrongerAdhesion) {
+  auto w = testing::world_from_text(two_blocks(0.6e-6, true));
+  World& world = *w.world;
+  evaluate(world);
+  const Vec3 f = total(world.bodies[0]->force);
+  std::printf("force on the upper block on the graded one: %.4e %.4e %.4e N\n", f.x(), f.y(), f.z());
+  EXPECT_LT(f.z(), 0.0);                      // adhesive at 0.6 um
+  EXPECT_GT(f.x(), 1e-3 * std::abs(f.z()));   // toward larger eps
+  EXPECT_LT(std::abs(f.y()), 1e-9 * std::abs(f.z()));
 }
 
 // The second body's top face bent into a wave (slope up to 0.05) and the first body
