@@ -44,17 +44,12 @@ double LennardJones::stiffness(double r) const {
 
 namespace {
 
-// n_I = beta V_I; beta = 0 means one molecule per particle on average (N / total volume,
-// summed in the one-rank order: the same bits on any rank count).
+// n_I = beta V_I (molecule_density: beta = 0 means one molecule per particle).
 std::vector<double> molecules_of(const Body& body, double beta) {
+  const double density = molecule_density(body, beta);
   const auto& V = body.cloud.volume;
-  if (beta == 0.0) {
-    double total = 0.0;
-    for (Index i : one_rank_order(body)) total += V[i];
-    beta = static_cast<double>(V.size()) / total;
-  }
   std::vector<double> n(V.size());
-  for (std::size_t i = 0; i < V.size(); ++i) n[i] = beta * V[i];
+  for (std::size_t i = 0; i < V.size(); ++i) n[i] = density * V[i];
   return n;
 }
 

@@ -70,6 +70,13 @@ class ContactReport {
   mutable std::vector<Vec3> corner_positions_;         // physical, at the last measure()
 };
 
+// Molecules per reference volume of a body: beta, or for beta = 0 the body's particle
+// number density N / V ("one molecule per particle"), summed in the one-rank order.
+double molecule_density(const Body& body, double beta);
+
+// Closest point of triangle (a, b, c) to p, with its barycentric weights in w.
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, std::array<double, 3>& w);
+
 // A contact term's report over a run (its `report_surface` key, either formulation):
 // samples the present state for history.csv and keeps the first sample and the
 // smallest gap for the summary. Without the key nothing is measured.

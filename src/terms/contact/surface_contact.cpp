@@ -18,60 +18,6 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// beta, or for beta = 0 the body's particle number density N / V (as the pair sum's
-// "one molecule per particle"), summed in the one-rank order.
-double molecule_density(const Body& body, double beta) {
-  if (beta > 0.0) return beta;
-  double total = 0.0;
-  for (Index i : one_rank_order(body)) total += body.cloud.volume[i];
-  return static_cast<double>(body.size()) / total;
-}
-
-// Closest point of triangle (a, b, c) to p and its barycentric weights (Ericson,
-// Real-Time Collision Detection, 5.1.5, written with the weights kept).
-Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, std::array<double, 3>& w) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) {
-    w = {1, 0, 0};
-    return a;
-  }
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) {
-    w = {0, 1, 0};
-    return b;
-  }
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double t = d1 / (d1 - d3);
-    w = {1 - t, t, 0};
-    return a + t * ab;
-  }
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) {
-    w = {0, 0, 1};
-    return c;
-  }
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double t = d2 / (d2 - d6);
-    w = {1 - t, 0, t};
-    return a + t * ac;
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    w = {0, 1 - t, t};
-    return b + t * (c - b);
-  }
-  const double denom = 1.0 / (va + vb + vc);
-  const double v = vb * denom, u = vc * denom;
-  w = {1 - v - u, v, u};
-  return a + ab * v + ac * u;
-}
-
 }  // namespace
 
 SurfaceContact::SurfaceContact(Body& a, Body& b, const ContactSettings& s, const par::Comm& comm)
